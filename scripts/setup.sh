@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Install the Debian packages TemplateQuad needs, then configure and build it.
+# Re-running skips what is already done: apt is only called for missing packages,
+# and the build is incremental.
+#
+#   scripts/setup.sh            install packages (if missing) and build into build/
+#   scripts/setup.sh --no-build install packages only
+set -euo pipefail
+
+repo_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+
+packages=(
+  # build
+  cmake ninja-build g++ pkg-config
+  # core, io, cli
+  nlohmann-json3-dev libcli11-dev libgtest-dev
+)
+
+missing=()
+for pkg in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$pkg")
+  fi
+done
+
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+else
+  echo "setup: all Debian packages present"
+fi
+
+if [ "${1:-}" = "--no-build" ]; then
+  exit 0
+fi
+
+build_dir="$repo_dir/build"
+if [ ! -f "$build_dir/build.ninja" ]; then
+  cmake -S "$repo_dir" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release
+fi
+cmake --build "$build_dir" --parallel "$(nproc)"

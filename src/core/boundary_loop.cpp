@@ -1,0 +1,99 @@
+#include "core/boundary_loop.h"
+
+#include <algorithm>
+#include <string>
+
+#include "core/input_error.h"
+#include "core/planar_self_intersection.h"
+
+namespace tquad {
+
+std::vector<int> curve_segment_counts(const std::vector<int>& sorted_corners, int point_count) {
+  std::vector<int> counts;
+  const int k = static_cast<int>(sorted_corners.size());
+  for (int i = 0; i < k; ++i) {
+    const int next = i + 1 < k ? sorted_corners[i + 1] : sorted_corners[0] + point_count;
+    counts.push_back(next - sorted_corners[i]);
+  }
+  return counts;
+}
+
+namespace {
+
+void check_sizes(const BoundaryLoop& loop) {
+  const auto n = loop.points.size();
+  if (n < 4) {
+    throw InputError("boundary has " + std::to_string(n) +
+                     " points; a quad mesh needs a closed loop of at least 4 segments");
+  }
+  if (n % 2 != 0) {
+    throw InputError("boundary has " + std::to_string(n) +
+                     " segments, an odd number; every quad mesh has an even number of "
+                     "boundary segments (add or remove one point)");
+  }
+  if (n > 100000000) {
+    throw InputError("boundary has " + std::to_string(n) + " points, more than 1e8");
+  }
+}
+
+std::vector<int> check_corners(const BoundaryLoop& loop) {
+  const int n = static_cast<int>(loop.points.size());
+  const auto& corners = loop.corners;
+  if (corners.size() < 2 || corners.size() > 4) {
+    throw InputError("boundary has " + std::to_string(corners.size()) +
+                     " corners; templates need 2, 3 or 4 (one per curve)");
+  }
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    if (corners[i] < 0 || corners[i] >= n) {
+      throw InputError("corner " + std::to_string(i) + " has index " +
+                       std::to_string(corners[i]) + ", outside the points 0.." +
+                       std::to_string(n - 1));
+    }
+  }
+  std::vector<int> sorted = corners;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t i = 1; i < sorted.size(); ++i) {
+    if (sorted[i] == sorted[i - 1]) {
+      throw InputError("corner index " + std::to_string(sorted[i]) +
+                       " is given twice; each curve needs at least one segment");
+    }
+  }
+  return sorted;
+}
+
+void check_points(const BoundaryLoop& loop) {
+  const int n = static_cast<int>(loop.points.size());
+  for (int i = 0; i < n; ++i) {
+    if (!is_finite(loop.points[i])) {
+      throw InputError("point " + std::to_string(i) + " has a coordinate that is NaN or infinite");
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    if (loop.points[i] == loop.points[j]) {
+      throw InputError("segment " + std::to_string(i) + " from point " + std::to_string(i) +
+                       " to point " + std::to_string(j) + " has zero length");
+    }
+  }
+}
+
+void check_two_curves_meshable(const std::vector<int>& counts) {
+  if (counts.size() == 2 && counts[0] == 1 && counts[1] == 1) {
+    throw InputError(
+        "the two curves have one segment each: a region of 2 boundary segments has no quad "
+        "mesh (curve 0 and curve 1 need at least 4 segments in total)");
+  }
+}
+
+}  // namespace
+
+std::vector<int> validate_boundary(const BoundaryLoop& loop) {
+  check_sizes(loop);
+  std::vector<int> sorted = check_corners(loop);
+  check_points(loop);
+  check_two_curves_meshable(curve_segment_counts(sorted, static_cast<int>(loop.points.size())));
+  check_planar_self_intersection(loop.points);
+  return sorted;
+}
+
+}  // namespace tquad

@@ -1,0 +1,22 @@
+// check_disk_mesh: the structural properties every mesh of a disk-like boundary must
+// have, checked without geometry tolerances. Used by the tests and by the CLI before
+// it writes anything (never a silent bad mesh).
+#pragma once
+
+#include <string>
+
+#include "core/quad_mesh.h"
+
+namespace tquad {
+
+// Returns "" when the mesh is valid, else what is wrong, for a mesh whose first
+// `boundary_points` nodes are the boundary loop in order:
+//   - node indices in range, four distinct nodes per quad;
+//   - conforming and consistently oriented: each directed edge in at most one quad,
+//     each interior edge in exactly two (once per direction), and the edges in one
+//     quad only are exactly the boundary segments i -> i+1;
+//   - every node used; no two nodes at the same position;
+//   - V = 1 + F + E/2 (Euler's formula for a disk of quads).
+std::string check_disk_mesh(const QuadMesh& mesh, int boundary_points);
+
+}  // namespace tquad

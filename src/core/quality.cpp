@@ -1,0 +1,82 @@
+#include "core/quality.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace tquad {
+
+std::array<Vec3, 4> quad_points(const QuadMesh& mesh, const Quad& q) {
+  return {mesh.nodes[q[0]], mesh.nodes[q[1]], mesh.nodes[q[2]], mesh.nodes[q[3]]};
+}
+
+double lee_lo_quality(const std::array<Vec3, 4>& p, const Vec3& normal) {
+  std::array<double, 4> alpha;
+  for (int i = 0; i < 4; ++i) {
+    const Vec3& prev = p[(i + 3) % 4];
+    const Vec3& here = p[i];
+    const Vec3& next = p[(i + 1) % 4];
+    const Vec3 a = next - here, b = prev - here, c = next - prev;
+    const double twice_area = dot(cross(a, b), normal);
+    const double squares = dot(a, a) + dot(b, b) + dot(c, c);
+    alpha[i] = squares > 0 ? std::sqrt(3.0) * twice_area / squares : 0.0;
+  }
+  std::sort(alpha.begin(), alpha.end(), std::greater<double>());
+  if (alpha[3] <= 0) return alpha[0] > 0 ? std::max(-1.0, alpha[3] / alpha[0]) : -1.0;
+  return (alpha[2] * alpha[3]) / (alpha[0] * alpha[1]);
+}
+
+double scaled_jacobian(const std::array<Vec3, 4>& p, const Vec3& normal) {
+  double worst = 1.0;
+  for (int i = 0; i < 4; ++i) {
+    const Vec3 a = p[(i + 1) % 4] - p[i], b = p[(i + 3) % 4] - p[i];
+    const double lengths = norm(a) * norm(b);
+    const double value = lengths > 0 ? dot(cross(a, b), normal) / lengths : -1.0;
+    worst = std::min(worst, value);
+  }
+  return worst;
+}
+
+namespace {
+
+struct Accumulator {
+  double min = INFINITY, max = -INFINITY, sum = 0, sum_sq = 0;
+  long long n = 0;
+  void add(double x) {
+    min = std::min(min, x); max = std::max(max, x);
+    sum += x; sum_sq += x * x; ++n;
+  }
+  QualityStats stats() const {
+    if (n == 0) return {};
+    const double avg = sum / n;
+    return {min, avg, max, std::sqrt(std::max(0.0, sum_sq / n - avg * avg))};
+  }
+};
+
+}  // namespace
+
+QualitySummary summarize_quality(const QuadMesh& mesh, const std::optional<Vec3>& reference) {
+  Accumulator lee_lo, jacobian;
+  QualitySummary summary;
+  for (const Quad& q : mesh.quads) {
+    const auto p = quad_points(mesh, q);
+    Vec3 normal;
+    if (reference) {
+      normal = *reference;
+    } else {
+      normal = cross(p[2] - p[0], p[3] - p[1]);
+      const double length = norm(normal);
+      normal = length > 0 ? (1.0 / length) * normal : Vec3{0, 0, 0};
+    }
+    const double j = scaled_jacobian(p, normal);
+    lee_lo.add(lee_lo_quality(p, normal));
+    jacobian.add(j);
+    if (j < 0) ++summary.inverted;
+    else if (j <= 1e-6) ++summary.degenerate;
+  }
+  summary.lee_lo = lee_lo.stats();
+  summary.scaled_jacobian = jacobian.stats();
+  return summary;
+}
+
+}  // namespace tquad

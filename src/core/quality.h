@@ -1,0 +1,40 @@
+// Element quality of quads: the Lee-Lo shape metric (paper, eq. 7) and the scaled
+// Jacobian, with their min / average / max / standard deviation over a mesh.
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include "core/quad_mesh.h"
+
+namespace tquad {
+
+// Lee-Lo: split the quad at each corner i into the triangle (P[i-1], P[i], P[i+1])
+// and take its shape measure alpha = 2 sqrt(3) area / (sum of squared edge lengths)
+// (1 for an equilateral triangle, signed by the normal); sorted a1 >= a2 >= a3 >= a4,
+// beta = (a3 a4) / (a1 a2). A rectangle scores 1. A quad with a corner triangle of
+// zero or negative area (degenerate or inverted) scores a4 / a1 <= 0 instead.
+double lee_lo_quality(const std::array<Vec3, 4>& quad, const Vec3& normal);
+
+// Minimum over the corners of (e_next x e_prev) . n / (|e_next| |e_prev|): 1 for a
+// rectangle, 0 for a 180-degree corner, negative for an inverted corner.
+double scaled_jacobian(const std::array<Vec3, 4>& quad, const Vec3& normal);
+
+struct QualityStats {
+  double min = 0, avg = 0, max = 0, std = 0;
+};
+
+struct QualitySummary {
+  QualityStats lee_lo;
+  QualityStats scaled_jacobian;
+  long long inverted = 0;    // quads with a negative scaled Jacobian
+  long long degenerate = 0;  // quads with scaled Jacobian in [0, 1e-6]
+};
+
+// Normal used to sign the metrics: `reference` for every quad when given (a planar
+// region), otherwise each quad's own normal, the cross product of its diagonals.
+QualitySummary summarize_quality(const QuadMesh& mesh, const std::optional<Vec3>& reference);
+
+std::array<Vec3, 4> quad_points(const QuadMesh& mesh, const Quad& q);
+
+}  // namespace tquad
