@@ -5,6 +5,7 @@
 
 #include "core/input_error.h"
 #include "core/mapped_grid.h"
+#include "core/planar_self_intersection.h"
 #include "core/region_regrouping.h"
 #include "core/template_plan.h"
 #include "core/template_realization.h"
@@ -73,6 +74,11 @@ TemplateOptions template_options(const MeshOptions& options) {
 }  // namespace
 
 QuadMesh mesh_boundary(const BoundaryLoop& loop, const MeshOptions& options) {
+  UntangleResult ignored;
+  return mesh_boundary(loop, options, ignored);
+}
+
+QuadMesh mesh_boundary(const BoundaryLoop& loop, const MeshOptions& options, UntangleResult& untangled) {
   const std::vector<int> corners = validate_boundary(loop);
   TemplateOptions topts = template_options(options);
   const int n = static_cast<int>(loop.points.size());
@@ -104,6 +110,11 @@ QuadMesh mesh_boundary(const BoundaryLoop& loop, const MeshOptions& options) {
     throw std::logic_error("mesh has " + std::to_string(mesh.nodes.size()) + " nodes and " +
                            std::to_string(mesh.quads.size()) + " quads; the plan expected " +
                            std::to_string(node_count) + " and " + std::to_string(plan.quad_count));
+  }
+  if (options.untangle) {
+    Vec3 normal;
+    const bool planar = planar_normal(loop.points, normal);
+    untangled = untangle_mesh(mesh, n, planar ? std::optional<Vec3>(normal) : std::nullopt);
   }
   mesh.template_tree = template_tree_string(plan.root);
   mesh.corners_used = corners_used;

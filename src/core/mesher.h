@@ -8,6 +8,7 @@
 
 #include "core/boundary_loop.h"
 #include "core/quad_mesh.h"
+#include "core/untangle.h"
 
 namespace tquad {
 
@@ -19,10 +20,15 @@ struct MeshOptions {
   int t5_cut_edges = 0;
   // Refuse inputs whose mesh would exceed this many quads (memory guard).
   long long max_quads = 100'000'000;
+  // Repair inverted or degenerate quads by local smoothing (untangle.h).
+  bool untangle = true;
 };
 
 // Throws InputError (bad input, message names the point, segment or curve) or
 // std::logic_error (an internal inconsistency; never expected).
 QuadMesh mesh_boundary(const BoundaryLoop& loop, const MeshOptions& options = {});
+
+// As mesh_boundary, and tells what the untangling pass did.
+QuadMesh mesh_boundary(const BoundaryLoop& loop, const MeshOptions& options, UntangleResult& untangled);
 
 }  // namespace tquad

@@ -80,11 +80,17 @@ bool project_if_planar(const std::vector<Vec3>& p, std::vector<Point2>& out) {
     lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)};
     hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
   }
-  if (norm(newell_normal(p)) <= 1e-14 * dot(hi - lo, hi - lo)) {
-    throw InputError("boundary encloses no area: it crosses itself or lies on a line");
-  }
   Vec3 normal;
-  if (!planar_normal(p, normal)) return false;
+  if (norm(newell_normal(p)) <= 1e-14 * dot(hi - lo, hi - lo)) {
+    // No net area (a bow-tie, or a loop on a line): look for the crossing in the
+    // coordinate plane where the loop spreads most; report it if there is one.
+    const Vec3 extent = hi - lo;
+    normal = extent.x <= extent.y && extent.x <= extent.z ? Vec3{1, 0, 0}
+             : extent.y <= extent.z                      ? Vec3{0, 1, 0}
+                                                         : Vec3{0, 0, 1};
+  } else if (!planar_normal(p, normal)) {
+    return false;
+  }
   // An orthonormal basis of the plane.
   const Vec3 helper = std::abs(normal.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
   Vec3 e1 = cross(normal, helper);
@@ -108,13 +114,7 @@ void check_fold_backs(const std::vector<Point2>& q) {
   }
 }
 
-}  // namespace
-
-void check_planar_self_intersection(const std::vector<Vec3>& points) {
-  std::vector<Point2> q;
-  if (!project_if_planar(points, q)) return;
-  check_fold_backs(q);
-
+void check_segment_crossings(const std::vector<Point2>& q) {
   const int n = static_cast<int>(q.size());
   double xmin = q[0].x, xmax = q[0].x, ymin = q[0].y, ymax = q[0].y;
   for (const Point2& p : q) {
@@ -148,6 +148,19 @@ void check_planar_self_intersection(const std::vector<Vec3>& points) {
         if (segments_meet(q[i], q[(i + 1) % n], q[j], q[(j + 1) % n])) report_crossing(i, j, n);
       }
     }
+  }
+}
+
+}  // namespace
+
+void check_planar_self_intersection(const std::vector<Vec3>& points) {
+  std::vector<Point2> q;
+  if (!project_if_planar(points, q)) return;
+  check_fold_backs(q);
+  check_segment_crossings(q);
+  Vec3 normal;
+  if (!planar_normal(points, normal)) {
+    throw InputError("boundary encloses no area: it lies on a line or retraces itself");
   }
 }
 

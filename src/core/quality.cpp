@@ -71,8 +71,8 @@ QualitySummary summarize_quality(const QuadMesh& mesh, const std::optional<Vec3>
     const double j = scaled_jacobian(p, normal);
     lee_lo.add(lee_lo_quality(p, normal));
     jacobian.add(j);
-    if (j < 0) ++summary.inverted;
-    else if (j <= 1e-6) ++summary.degenerate;
+    if (j < -kInvertedBelow) ++summary.inverted;
+    else if (j <= kDegenerateUpTo) ++summary.degenerate;
   }
   summary.lee_lo = lee_lo.stats();
   summary.scaled_jacobian = jacobian.stats();

@@ -24,11 +24,17 @@ struct QualityStats {
   double min = 0, avg = 0, max = 0, std = 0;
 };
 
+// A straight-angle corner computes to a scaled Jacobian within rounding of 0, either
+// sign: values in [-kInvertedBelow, kDegenerateUpTo] count as degenerate, below as
+// inverted.
+constexpr double kInvertedBelow = 1e-9;
+constexpr double kDegenerateUpTo = 1e-6;
+
 struct QualitySummary {
   QualityStats lee_lo;
   QualityStats scaled_jacobian;
-  long long inverted = 0;    // quads with a negative scaled Jacobian
-  long long degenerate = 0;  // quads with scaled Jacobian in [0, 1e-6]
+  long long inverted = 0;    // quads with a scaled Jacobian below -kInvertedBelow
+  long long degenerate = 0;  // quads with a scaled Jacobian in [-kInvertedBelow, kDegenerateUpTo]
 };
 
 // Normal used to sign the metrics: `reference` for every quad when given (a planar

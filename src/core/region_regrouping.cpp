@@ -79,7 +79,7 @@ std::vector<int> regroup_curves(const CurveCounts& counts) {
 CurveCounts counts_from_offsets(const std::vector<int>& offsets, int total_edges) {
   CurveCounts counts;
   for (std::size_t i = 0; i < offsets.size(); ++i) {
-    const int next = i + 1 < offsets.size() ? offsets[i + 1] : total_edges;
+    const int next = i + 1 < offsets.size() ? offsets[i + 1] : total_edges + offsets[0];
     counts.push_back(next - offsets[i]);
   }
   return counts;

@@ -19,11 +19,13 @@
 namespace tquad {
 
 // Corner positions, as edge offsets along the loop from the region's first corner,
-// that the templates should use. Returns {0, n0, n0 + n1, ...} (the region's own
+// that the templates should use, ascending (the first is not 0 when the merge drops
+// the region's first corner). Returns {0, n0, n0 + n1, ...} (the region's own
 // corners) when no regrouping is needed.
 std::vector<int> regroup_curves(const CurveCounts& counts);
 
-// Counts of the curves between consecutive corner offsets of a loop of total edges.
+// Counts of the curves between consecutive corner offsets of a loop of total edges
+// (the last curve wraps around to the first offset).
 CurveCounts counts_from_offsets(const std::vector<int>& offsets, int total_edges);
 
 }  // namespace tquad

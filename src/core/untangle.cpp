@@ -1,0 +1,168 @@
+#include "core/untangle.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace tquad {
+
+namespace {
+
+constexpr double kBadCorner = 1e-6;  // scaled Jacobian at or below: degenerate or inverted
+
+// Compressed adjacency lists: items of node i are items[offsets[i] .. offsets[i+1]).
+struct Adjacency {
+  std::vector<int> offsets, items;
+  template <typename Add>
+  static Adjacency build(std::size_t nodes, const Add& add_pairs) {
+    Adjacency a;
+    a.offsets.assign(nodes + 1, 0);
+    add_pairs([&](NodeId node, int) { ++a.offsets[node + 1]; });
+    for (std::size_t i = 0; i < nodes; ++i) a.offsets[i + 1] += a.offsets[i];
+    a.items.resize(a.offsets.back());
+    std::vector<int> fill(a.offsets.begin(), a.offsets.end() - 1);
+    add_pairs([&](NodeId node, int item) { a.items[fill[node]++] = item; });
+    return a;
+  }
+};
+
+class Untangler {
+ public:
+  Untangler(QuadMesh& mesh, int boundary_points, const std::optional<Vec3>& plane_normal)
+      : mesh_(mesh), boundary_points_(boundary_points) {
+    // Each interior edge appears once in each direction, so following directed edges
+    // gives every interior node each neighbour exactly once.
+    neighbours_ = Adjacency::build(mesh.nodes.size(), [&](auto add) {
+      for (const Quad& q : mesh.quads) for (int i = 0; i < 4; ++i) add(q[i], q[(i + 1) % 4]);
+    });
+    quads_of_ = Adjacency::build(mesh.nodes.size(), [&](auto add) {
+      for (std::size_t k = 0; k < mesh.quads.size(); ++k) for (NodeId n : mesh.quads[k]) add(n, static_cast<int>(k));
+    });
+    normals_.resize(mesh.nodes.size());
+    for (std::size_t n = 0; n < mesh.nodes.size(); ++n) {
+      normals_[n] = plane_normal ? *plane_normal : estimated_normal(static_cast<NodeId>(n));
+    }
+  }
+
+  bool is_bad(int quad_index) const {
+    const Quad& q = mesh_.quads[quad_index];
+    for (int i = 0; i < 4; ++i) {
+      const NodeId prev = q[(i + 3) % 4], here = q[i], next = q[(i + 1) % 4];
+      // A corner whose node and both neighbours are on the boundary cannot be moved.
+      if (here < boundary_points_ && prev < boundary_points_ && next < boundary_points_) continue;
+      const Vec3 a = mesh_.nodes[next] - mesh_.nodes[here], b = mesh_.nodes[prev] - mesh_.nodes[here];
+      const double lengths = norm(a) * norm(b);
+      if (lengths == 0 || dot(cross(a, b), normals_[here]) / lengths <= kBadCorner) return true;
+    }
+    return false;
+  }
+
+  std::vector<int> bad_quads() const {
+    std::vector<int> bad;
+    for (std::size_t k = 0; k < mesh_.quads.size(); ++k) if (is_bad(static_cast<int>(k))) bad.push_back(static_cast<int>(k));
+    return bad;
+  }
+
+  UntangleResult run() {
+    UntangleResult result;
+    std::vector<int> bad = bad_quads();
+    result.bad_before = static_cast<long long>(bad.size());
+    if (bad.empty()) return result;
+
+    std::vector<char> active(mesh_.nodes.size(), 0);
+    std::vector<NodeId> active_list;
+    auto activate = [&](NodeId n) {
+      if (n >= boundary_points_ && !active[n]) { active[n] = 1; active_list.push_back(n); }
+    };
+    for (int k : bad) for (NodeId n : mesh_.quads[k]) activate(n);
+
+    // Grow the smoothed zone two rings per round until no bad quad is left; once it
+    // covers the whole mesh, double the sweeps per round (Gauss-Seidel converges
+    // slowly on long grids) and give up after rounds that bring no progress.
+    const long long interior = static_cast<long long>(mesh_.nodes.size()) - boundary_points_;
+    int sweeps = 8, stalled = 0;
+    std::size_t fewest = bad.size();
+    for (int round = 0; round < 40 && !bad.empty() && stalled < 4; ++round) {
+      grow_ring(active, active_list, activate);
+      grow_ring(active, active_list, activate);
+      const bool everything = static_cast<long long>(active_list.size()) >= interior;
+      for (int s = 0; s < sweeps; ++s) sweep(active_list);
+      if (everything) sweeps = std::min(sweeps * 2, 1024);
+      bad = bad_quads();
+      for (int k : bad) for (NodeId n : mesh_.quads[k]) activate(n);
+      if (bad.size() < fewest) { fewest = bad.size(); stalled = 0; } else if (everything) { ++stalled; }
+    }
+    result.bad_after = static_cast<long long>(bad.size());
+    result.moved_nodes = static_cast<long long>(active_list.size());
+    return result;
+  }
+
+ private:
+  Vec3 estimated_normal(NodeId n) const {
+    Vec3 sum;
+    for (int i = quads_of_.offsets[n]; i < quads_of_.offsets[n + 1]; ++i) {
+      const Quad& q = mesh_.quads[quads_of_.items[i]];
+      const Vec3 d = cross(mesh_.nodes[q[2]] - mesh_.nodes[q[0]], mesh_.nodes[q[3]] - mesh_.nodes[q[1]]);
+      const double length = norm(d);
+      if (length > 0) sum += (1.0 / length) * d;
+    }
+    const double length = norm(sum);
+    return length > 0 ? (1.0 / length) * sum : Vec3{0, 0, 1};
+  }
+
+  template <typename Activate>
+  void grow_ring(const std::vector<char>& active, const std::vector<NodeId>& list, const Activate& activate) {
+    const std::size_t count = list.size();
+    for (std::size_t i = 0; i < count; ++i) {
+      const NodeId n = list[i];
+      for (int k = neighbours_.offsets[n]; k < neighbours_.offsets[n + 1]; ++k) {
+        if (!active[neighbours_.items[k]]) activate(neighbours_.items[k]);
+      }
+    }
+  }
+
+  // One Gauss-Seidel Laplacian sweep; the move is projected on the node's tangent plane.
+  void sweep(const std::vector<NodeId>& nodes) {
+    for (NodeId n : nodes) {
+      Vec3 mean;
+      const int first = neighbours_.offsets[n], last = neighbours_.offsets[n + 1];
+      for (int k = first; k < last; ++k) mean += mesh_.nodes[neighbours_.items[k]];
+      mean = (1.0 / (last - first)) * mean;
+      Vec3 move = mean - mesh_.nodes[n];
+      move = move - dot(move, normals_[n]) * normals_[n];
+      mesh_.nodes[n] += move;
+    }
+  }
+
+  QuadMesh& mesh_;
+  int boundary_points_;
+  Adjacency neighbours_, quads_of_;
+  std::vector<Vec3> normals_;
+};
+
+// A cheap first look, without adjacency: any corner at or below kBadCorner, signed by
+// the plane normal or, for a curved region, by the quad's own diagonal normal.
+bool has_bad_corner(const QuadMesh& mesh, const std::optional<Vec3>& plane_normal) {
+  for (const Quad& q : mesh.quads) {
+    const Vec3 p[4] = {mesh.nodes[q[0]], mesh.nodes[q[1]], mesh.nodes[q[2]], mesh.nodes[q[3]]};
+    const Vec3 normal = plane_normal ? *plane_normal : cross(p[2] - p[0], p[3] - p[1]);
+    const Vec3 e[4] = {p[1] - p[0], p[2] - p[1], p[3] - p[2], p[0] - p[3]};
+    for (int i = 0; i < 4; ++i) {
+      // Corner i between e[i] (outgoing) and -e[i-1] (incoming, reversed).
+      const Vec3& out = e[i];
+      const Vec3& in = e[(i + 3) % 4];
+      const double signed_area = -dot(cross(out, in), normal);
+      const double scale = dot(out, out) * dot(in, in) * dot(normal, normal);
+      if (signed_area <= 0 || signed_area * signed_area <= kBadCorner * kBadCorner * scale) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+UntangleResult untangle_mesh(QuadMesh& mesh, int boundary_points, const std::optional<Vec3>& plane_normal) {
+  if (!has_bad_corner(mesh, plane_normal)) return {};
+  return Untangler(mesh, boundary_points, plane_normal).run();
+}
+
+}  // namespace tquad

@@ -1,0 +1,55 @@
+// Quality metrics on shapes whose values are known.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/quality.h"
+
+namespace tquad {
+namespace {
+
+const Vec3 kUp{0, 0, 1};
+
+TEST(Quality, RectanglesScoreOne) {
+  for (double w : {1.0, 0.2, 5.0}) {
+    const std::array<Vec3, 4> q{Vec3{0, 0, 0}, Vec3{w, 0, 0}, Vec3{w, 1, 0}, Vec3{0, 1, 0}};
+    EXPECT_NEAR(lee_lo_quality(q, kUp), 1.0, 1e-12) << w;
+    EXPECT_NEAR(scaled_jacobian(q, kUp), 1.0, 1e-12) << w;
+  }
+}
+
+TEST(Quality, ParallelogramScoresItsAngle) {
+  const double angle = M_PI / 3;  // 60 degrees
+  const Vec3 s{std::cos(angle), std::sin(angle), 0};
+  const std::array<Vec3, 4> q{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{1, 0, 0} + s, s};
+  EXPECT_NEAR(scaled_jacobian(q, kUp), std::sin(angle), 1e-12);
+  // Unit rhombus: corner triangles at 60 degrees are equilateral (alpha 1), at 120
+  // degrees have edges 1, 1, sqrt(3) and alpha = 2 sqrt(3) (sqrt(3)/4) / 5 = 0.6.
+  EXPECT_NEAR(lee_lo_quality(q, kUp), (0.6 * 0.6) / (1.0 * 1.0), 1e-12);
+}
+
+TEST(Quality, InvertedAndDegenerateQuadsScoreAtMostZero) {
+  const std::array<Vec3, 4> clockwise{Vec3{0, 0, 0}, Vec3{0, 1, 0}, Vec3{1, 1, 0}, Vec3{1, 0, 0}};
+  EXPECT_LT(scaled_jacobian(clockwise, kUp), 0);
+  EXPECT_LT(lee_lo_quality(clockwise, kUp), 0);
+  const std::array<Vec3, 4> straight_corner{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{2, 0, 0}, Vec3{1, 1, 0}};
+  EXPECT_NEAR(scaled_jacobian(straight_corner, kUp), 0.0, 1e-12);
+  EXPECT_LE(lee_lo_quality(straight_corner, kUp), 0.0);
+  const std::array<Vec3, 4> bow_tie{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{1, 1, 0}};
+  EXPECT_LT(scaled_jacobian(bow_tie, kUp), 0);
+}
+
+TEST(Quality, SummaryCountsInvertedQuadsAndComputesStatistics) {
+  QuadMesh mesh;
+  mesh.nodes = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}, {2, 1, 0}};
+  mesh.quads = {{0, 1, 2, 3}, {1, 2, 5, 4}};  // the second is clockwise
+  const QualitySummary s = summarize_quality(mesh, kUp);
+  EXPECT_EQ(s.inverted, 1);
+  EXPECT_NEAR(s.scaled_jacobian.max, 1.0, 1e-12);
+  EXPECT_NEAR(s.scaled_jacobian.min, -1.0, 1e-12);
+  EXPECT_NEAR(s.scaled_jacobian.avg, 0.0, 1e-12);
+  EXPECT_NEAR(s.scaled_jacobian.std, 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace tquad
