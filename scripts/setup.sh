@@ -5,16 +5,25 @@
 #
 #   scripts/setup.sh            install packages (if missing) and build into build/
 #   scripts/setup.sh --no-build install packages only
+#   scripts/setup.sh --peers    also install the peers the benchmarks compare with
 set -euo pipefail
 
 repo_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
+build=yes
 packages=(
   # build
   cmake ninja-build g++ pkg-config
-  # core, io, cli
+  # core, io, cli, tests
   nlohmann-json3-dev libcli11-dev libgtest-dev
 )
+for arg in "$@"; do
+  case "$arg" in
+    --no-build) build=no ;;
+    --peers) packages+=(gmsh python3-gmsh) ;;
+    *) echo "setup: unknown option $arg (use --no-build, --peers)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for pkg in "${packages[@]}"; do
@@ -34,7 +43,7 @@ else
   echo "setup: all Debian packages present"
 fi
 
-if [ "${1:-}" = "--no-build" ]; then
+if [ "$build" = no ]; then
   exit 0
 fi
 

@@ -77,21 +77,12 @@ void check_points(const BoundaryLoop& loop) {
   }
 }
 
-void check_two_curves_meshable(const std::vector<int>& counts) {
-  if (counts.size() == 2 && counts[0] == 1 && counts[1] == 1) {
-    throw InputError(
-        "the two curves have one segment each: a region of 2 boundary segments has no quad "
-        "mesh (curve 0 and curve 1 need at least 4 segments in total)");
-  }
-}
-
 }  // namespace
 
 std::vector<int> validate_boundary(const BoundaryLoop& loop) {
   check_sizes(loop);
   std::vector<int> sorted = check_corners(loop);
   check_points(loop);
-  check_two_curves_meshable(curve_segment_counts(sorted, static_cast<int>(loop.points.size())));
   check_planar_self_intersection(loop.points);
   return sorted;
 }

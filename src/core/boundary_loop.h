@@ -20,7 +20,7 @@ std::vector<int> curve_segment_counts(const std::vector<int>& sorted_corners, in
 // Throws InputError naming the point, segment or curve at fault when the loop cannot
 // be meshed: fewer than 4 points, odd segment count, corner count not 2..4, corner
 // out of range or repeated, non-finite coordinate, zero-length segment, a planar
-// boundary that crosses itself or folds back, two curves of one segment each.
+// boundary that crosses itself or folds back.
 // Returns the corners sorted ascending.
 std::vector<int> validate_boundary(const BoundaryLoop& loop);
 

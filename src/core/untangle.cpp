@@ -1,6 +1,7 @@
 #include "core/untangle.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace tquad {
@@ -68,35 +69,139 @@ class Untangler {
     result.bad_before = static_cast<long long>(bad.size());
     if (bad.empty()) return result;
 
-    std::vector<char> active(mesh_.nodes.size(), 0);
-    std::vector<NodeId> active_list;
-    auto activate = [&](NodeId n) {
-      if (n >= boundary_points_ && !active[n]) { active[n] = 1; active_list.push_back(n); }
-    };
-    for (int k : bad) for (NodeId n : mesh_.quads[k]) activate(n);
-
-    // Grow the smoothed zone two rings per round until no bad quad is left; once it
-    // covers the whole mesh, double the sweeps per round (Gauss-Seidel converges
-    // slowly on long grids) and give up after rounds that bring no progress.
-    const long long interior = static_cast<long long>(mesh_.nodes.size()) - boundary_points_;
-    int sweeps = 8, stalled = 0;
-    std::size_t fewest = bad.size();
-    for (int round = 0; round < 40 && !bad.empty() && stalled < 4; ++round) {
-      grow_ring(active, active_list, activate);
-      grow_ring(active, active_list, activate);
-      const bool everything = static_cast<long long>(active_list.size()) >= interior;
-      for (int s = 0; s < sweeps; ++s) sweep(active_list);
-      if (everything) sweeps = std::min(sweeps * 2, 1024);
-      bad = bad_quads();
-      for (int k : bad) for (NodeId n : mesh_.quads[k]) activate(n);
-      if (bad.size() < fewest) { fewest = bad.size(); stalled = 0; } else if (everything) { ++stalled; }
+    const std::vector<Vec3> placed = mesh_.nodes;
+    std::vector<NodeId> zone = smooth_laplacian(bad);
+    std::size_t remaining = bad_quads().size();
+    if (remaining > 0) {
+      // Laplacian smoothing only guarantees validity on convex regions; on others it
+      // can drag nodes across a concave side. Start again from the template's
+      // positions with the local max-min repair and keep the better outcome.
+      std::vector<Vec3> smoothed = mesh_.nodes;
+      mesh_.nodes = placed;
+      std::vector<NodeId> optimized = maximize_worst_corners(bad_quads());
+      const std::size_t after = bad_quads().size();
+      if (after <= remaining) {
+        remaining = after;
+        zone = optimized;
+      } else {
+        mesh_.nodes.swap(smoothed);
+      }
     }
-    result.bad_after = static_cast<long long>(bad.size());
-    result.moved_nodes = static_cast<long long>(active_list.size());
+    result.bad_after = static_cast<long long>(remaining);
+    result.moved_nodes = static_cast<long long>(zone.size());
     return result;
   }
 
  private:
+  // The nodes of the bad quads plus `rings` layers of neighbours, interior only.
+  struct Zone {
+    std::vector<char> member;
+    std::vector<NodeId> nodes;
+  };
+  Zone zone_around(const std::vector<int>& bad) const {
+    Zone z{std::vector<char>(mesh_.nodes.size(), 0), {}};
+    for (int k : bad) for (NodeId n : mesh_.quads[k]) add_to(z, n);
+    return z;
+  }
+  void add_to(Zone& z, NodeId n) const {
+    if (n >= boundary_points_ && !z.member[n]) { z.member[n] = 1; z.nodes.push_back(n); }
+  }
+  void grow_ring(Zone& z) const {
+    const std::size_t count = z.nodes.size();
+    for (std::size_t i = 0; i < count; ++i) {
+      const NodeId n = z.nodes[i];
+      for (int k = neighbours_.offsets[n]; k < neighbours_.offsets[n + 1]; ++k) add_to(z, neighbours_.items[k]);
+    }
+  }
+
+  // Laplacian smoothing in a zone grown two rings per round until no bad quad is
+  // left; once it covers the whole mesh, the sweeps per round double (Gauss-Seidel
+  // converges slowly on long grids) until rounds bring no progress.
+  std::vector<NodeId> smooth_laplacian(std::vector<int> bad) {
+    Zone z = zone_around(bad);
+    const long long interior = static_cast<long long>(mesh_.nodes.size()) - boundary_points_;
+    int sweeps = 8, stalled = 0;
+    std::size_t fewest = bad.size();
+    for (int round = 0; round < 40 && !bad.empty() && stalled < 4; ++round) {
+      grow_ring(z);
+      grow_ring(z);
+      const bool everything = static_cast<long long>(z.nodes.size()) >= interior;
+      for (int s = 0; s < sweeps; ++s) laplacian_sweep(z.nodes);
+      if (everything) sweeps = std::min(sweeps * 2, 1024);
+      bad = bad_quads();
+      for (int k : bad) for (NodeId n : mesh_.quads[k]) add_to(z, n);
+      if (bad.size() < fewest) { fewest = bad.size(); stalled = 0; } else if (everything) { ++stalled; }
+    }
+    return z.nodes;
+  }
+
+  // Local max-min repair: each node of the zone (the bad quads and two rings around)
+  // moves, in its tangent plane, to raise the worst scaled Jacobian of the corners
+  // its position decides, by a compass search whose step starts at a quarter of its
+  // shortest edge.
+  std::vector<NodeId> maximize_worst_corners(std::vector<int> bad) {
+    Zone z = zone_around(bad);
+    grow_ring(z);
+    grow_ring(z);
+    std::size_t fewest = bad.size();
+    for (int pass = 0, stalled = 0; pass < 30 && !bad.empty() && stalled < 3; ++pass) {
+      for (NodeId n : z.nodes) improve_node(n);
+      bad = bad_quads();
+      for (int k : bad) for (NodeId n : mesh_.quads[k]) add_to(z, n);
+      if (bad.size() < fewest) { fewest = bad.size(); stalled = 0; } else { ++stalled; }
+    }
+    return z.nodes;
+  }
+
+  // Scaled Jacobian at corner i of quad q, signed by the corner node's normal.
+  double corner_quality(const Quad& q, int i) const {
+    const NodeId here = q[i];
+    const Vec3 a = mesh_.nodes[q[(i + 1) % 4]] - mesh_.nodes[here];
+    const Vec3 b = mesh_.nodes[q[(i + 3) % 4]] - mesh_.nodes[here];
+    const double lengths = norm(a) * norm(b);
+    return lengths > 0 ? dot(cross(a, b), normals_[here]) / lengths : -1.0;
+  }
+
+  // Worst corner whose angle depends on node n: at n and at its two neighbours in
+  // each quad around it.
+  double worst_corner_near(NodeId n) const {
+    double worst = 1.0;
+    for (int k = quads_of_.offsets[n]; k < quads_of_.offsets[n + 1]; ++k) {
+      const Quad& q = mesh_.quads[quads_of_.items[k]];
+      const int i = static_cast<int>(std::find(q.begin(), q.end(), n) - q.begin());
+      for (int j : {i, (i + 1) % 4, (i + 3) % 4}) worst = std::min(worst, corner_quality(q, j));
+    }
+    return worst;
+  }
+
+  void improve_node(NodeId n) {
+    double shortest = INFINITY;
+    for (int k = neighbours_.offsets[n]; k < neighbours_.offsets[n + 1]; ++k) {
+      shortest = std::min(shortest, distance(mesh_.nodes[n], mesh_.nodes[neighbours_.items[k]]));
+    }
+    const Vec3& normal = normals_[n];
+    const Vec3 helper = std::abs(normal.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    Vec3 e1 = cross(normal, helper);
+    e1 = (1.0 / norm(e1)) * e1;
+    const Vec3 e2 = cross(normal, e1);
+    double best = worst_corner_near(n);
+    for (double step = 0.25 * shortest; step > 1e-3 * shortest; step *= 0.5) {
+      bool moved = true;
+      for (int tries = 0; moved && tries < 4; ++tries) {
+        moved = false;
+        const Vec3 start = mesh_.nodes[n];
+        Vec3 best_position = start;
+        for (int d = 0; d < 8; ++d) {
+          const double angle = d * M_PI / 4;
+          mesh_.nodes[n] = start + step * (std::cos(angle) * e1 + std::sin(angle) * e2);
+          const double value = worst_corner_near(n);
+          if (value > best + 1e-12) { best = value; best_position = mesh_.nodes[n]; moved = true; }
+        }
+        mesh_.nodes[n] = best_position;
+      }
+    }
+  }
+
   Vec3 estimated_normal(NodeId n) const {
     Vec3 sum;
     for (int i = quads_of_.offsets[n]; i < quads_of_.offsets[n + 1]; ++i) {
@@ -109,19 +214,8 @@ class Untangler {
     return length > 0 ? (1.0 / length) * sum : Vec3{0, 0, 1};
   }
 
-  template <typename Activate>
-  void grow_ring(const std::vector<char>& active, const std::vector<NodeId>& list, const Activate& activate) {
-    const std::size_t count = list.size();
-    for (std::size_t i = 0; i < count; ++i) {
-      const NodeId n = list[i];
-      for (int k = neighbours_.offsets[n]; k < neighbours_.offsets[n + 1]; ++k) {
-        if (!active[neighbours_.items[k]]) activate(neighbours_.items[k]);
-      }
-    }
-  }
-
   // One Gauss-Seidel Laplacian sweep; the move is projected on the node's tangent plane.
-  void sweep(const std::vector<NodeId>& nodes) {
+  void laplacian_sweep(const std::vector<NodeId>& nodes) {
     for (NodeId n : nodes) {
       Vec3 mean;
       const int first = neighbours_.offsets[n], last = neighbours_.offsets[n + 1];

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Build TemplateQuad (installing missing Debian packages first) and run every test.
+# This is the README's test command; .ci/run calls it.
+set -euo pipefail
+repo_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+"$repo_dir/scripts/setup.sh"
+ctest --test-dir "$repo_dir/build" --output-on-failure --timeout 600 -j "$(nproc)"
+# The property tests record the worst element quality they saw; show it.
+grep -h "\[ quality  \]" "$repo_dir/build/Testing/Temporary/LastTest.log" || true

@@ -1,0 +1,85 @@
+// tquad: the command-line front end. Parses the arguments and runs the job in
+// run_mesh_command; exit status 0 done, 2 wrong input or usage, 1 internal failure.
+#include <climits>
+#include <exception>
+#include <iostream>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/mesh_command.h"
+
+namespace {
+
+const char* const exit_status_text =
+    "Exit status: 0 done; 2 the input or the command line is wrong (stderr says what and\n"
+    "where); 1 an internal failure. The output file is written only when the whole mesh\n"
+    "succeeded and passed its checks.";
+
+int run_cli(int argc, char** argv) {
+  CLI::App app{"TemplateQuad: all-quadrilateral meshes by hierarchical templates (T0..T5)", "tquad"};
+  app.footer(std::string("Example: tquad mesh plate.json -o plate.vtu --report json\n\n") + exit_status_text);
+  app.set_version_flag("--version", "tquad 0.1.0");
+  app.require_subcommand(1);
+
+  tquad::MeshCommand command;
+  std::string report;
+  CLI::App* mesh = app.add_subcommand("mesh", "Mesh a boundary (or, later, a CAD shape) into quads");
+  mesh->add_option("input", command.input,
+                   "Boundary file .json: {\"points\": [[x,y,z] or [x,y], ...], \"corners\": [i, ...]},\n"
+                   "a closed loop with an even number of points and 2, 3 or 4 corners.\n"
+                   "CAD input (.step .stp .brep .iges .igs) is not yet supported in this build.")
+      ->type_name("INPUT")
+      ->required();
+  mesh->add_option("-o,--output", command.output,
+                   "Output file; the format follows the extension: .json (mesh JSON), .vtu (VTK\n"
+                   "XML, binary), .svg (drawing with subregion boundaries)")
+      ->type_name("OUTPUT")
+      ->required();
+  mesh->add_option("--report", report,
+                   "Print a report instead of the summary; 'json' prints one JSON object\n"
+                   "(counts, quality, template tree per face, refused faces) on stdout")
+      ->type_name("FORMAT")
+      ->check(CLI::IsMember({"json"}));
+  mesh->add_option("--t4-ratio", command.options.t4_ratio,
+                   "k of the T4 test k*C <= A and k*C <= B (at least 2)")
+      ->type_name("K")
+      ->check(CLI::Range(2, INT_MAX).description(""))
+      ->capture_default_str();
+  mesh->add_option("--t5-cut-edges", command.options.t5_cut_edges,
+                   "Edges on the T5 cut of a two-curve region (>= 0); 0 = from the geometry")
+      ->type_name("C")
+      ->check(CLI::Range(0, INT_MAX).description(""))
+      ->capture_default_str();
+  mesh->add_option("--max-quads", command.options.max_quads,
+                   "Refuse inputs whose mesh would have more than N quads (N >= 1)")
+      ->type_name("N")
+      ->check(CLI::Range(1LL, LLONG_MAX).description(""))
+      ->capture_default_str();
+  mesh->footer(exit_status_text);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    std::cerr << "tquad: error: " << e.what() << " (see 'tquad" << (mesh->parsed() ? " mesh" : "")
+              << " --help')\n";
+    return 2;
+  }
+  command.report_json = report == "json";
+  return tquad::run_mesh_command(command, std::cout, std::cerr);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run_cli(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "tquad: error: internal failure: " << e.what() << "\n";
+    return 1;
+  } catch (...) {
+    std::cerr << "tquad: error: internal failure: unknown exception\n";
+    return 1;
+  }
+}

@@ -1,0 +1,23 @@
+// mesh_report_json: the object `tquad mesh --report json` prints (DESIGN.md, public
+// contracts):
+//   {"nodes": n, "quads": m, "triangles": 0,
+//    "quality": {"lee_lo": {"min","avg","max","std"}, "scaled_jacobian": {...},
+//                "inverted": i, "degenerate": d},
+//    "faces": [{"face": 0, "template_tree": "T2[T0,T0,T1[T0,T0,T0,T0]]"}],
+//    "refused_faces": []}
+// Keys keep this order (ordered_json) so the printed report reads top-down.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "core/quad_mesh.h"
+#include "core/quality.h"
+
+namespace tquad {
+
+nlohmann::ordered_json quality_stats_json(const QualityStats& stats);
+
+// The report of one boundary region meshed as face 0.
+nlohmann::ordered_json mesh_report_json(const QuadMesh& mesh, const QualitySummary& quality);
+
+}  // namespace tquad

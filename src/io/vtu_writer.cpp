@@ -1,0 +1,136 @@
+#include "io/vtu_writer.h"
+
+#include <charconv>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <vector>
+
+#include "io/atomic_file_writer.h"
+
+namespace tquad {
+
+namespace {
+
+constexpr std::uint8_t vtk_quad = 9;
+
+bool little_endian() {
+  const std::uint16_t probe = 1;
+  unsigned char first = 0;
+  std::memcpy(&first, &probe, 1);
+  return first == 1;
+}
+
+// One DataArray of the appended section: its XML attributes and its raw bytes.
+struct ArrayBlock {
+  std::string type, name;
+  int components;
+  const void* data;
+  std::uint64_t bytes;
+};
+
+void write_header(std::ostream& out, const QuadMesh& mesh) {
+  out << "<?xml version=\"1.0\"?>\n"
+      << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\""
+      << (little_endian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt64\">\n"
+      << "  <UnstructuredGrid>\n"
+      << "    <Piece NumberOfPoints=\"" << mesh.nodes.size() << "\" NumberOfCells=\""
+      << mesh.quads.size() << "\">\n";
+}
+
+void write_data_array_tag(std::ostream& out, const ArrayBlock& a, const std::string& format,
+                          std::uint64_t offset) {
+  out << "        <DataArray type=\"" << a.type << "\" Name=\"" << a.name << "\"";
+  if (a.components > 1) out << " NumberOfComponents=\"" << a.components << "\"";
+  out << " format=\"" << format << "\"";
+  if (format == "appended") out << " offset=\"" << offset << "\"/>\n";
+  else out << ">\n";
+}
+
+template <typename T>
+void write_ascii_values(std::ostream& out, const T* values, std::size_t count, int per_line) {
+  std::string line;
+  char buffer[32];
+  for (std::size_t i = 0; i < count; ++i) {
+    // Shortest round-trip text for doubles; plain integers otherwise (no char output).
+    const auto r = std::to_chars(buffer, buffer + sizeof buffer, +values[i]);
+    line.append(buffer, r.ptr);
+    line += (i + 1) % per_line == 0 || i + 1 == count ? '\n' : ' ';
+    if (line.size() > (1u << 16)) { out << line; line.clear(); }
+  }
+  out << line;
+}
+
+}  // namespace
+
+void write_vtu(std::ostream& out, const QuadMesh& mesh, VtuEncoding encoding) {
+  const std::size_t cells = mesh.quads.size();
+  // Vec3 and Quad are plain arrays of double / int32 without padding, so their
+  // storage is the VTK array layout itself.
+  static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
+  static_assert(sizeof(Quad) == 4 * sizeof(std::int32_t), "Quad must be four packed int32");
+  std::vector<std::int64_t> offsets(cells);
+  for (std::size_t k = 0; k < cells; ++k) offsets[k] = 4 * static_cast<std::int64_t>(k + 1);
+  const std::vector<std::uint8_t> types(cells, vtk_quad);
+  const std::vector<std::int32_t> face(cells, 0);
+
+  const ArrayBlock points{"Float64", "Points", 3, mesh.nodes.data(), mesh.nodes.size() * sizeof(Vec3)};
+  const ArrayBlock connectivity{"Int32", "connectivity", 1, mesh.quads.data(), cells * sizeof(Quad)};
+  const ArrayBlock offset_block{"Int64", "offsets", 1, offsets.data(), cells * sizeof(std::int64_t)};
+  const ArrayBlock type_block{"UInt8", "types", 1, types.data(), cells};
+  const ArrayBlock face_block{"Int32", "face", 1, face.data(), cells * sizeof(std::int32_t)};
+
+  write_header(out, mesh);
+  if (encoding == VtuEncoding::appended_raw) {
+    // Each block of the appended section is a UInt64 byte count and the bytes.
+    std::uint64_t offset = 0;
+    auto tag = [&](const ArrayBlock& a) {
+      write_data_array_tag(out, a, "appended", offset);
+      offset += sizeof(std::uint64_t) + a.bytes;
+    };
+    out << "      <Points>\n";
+    tag(points);
+    out << "      </Points>\n      <Cells>\n";
+    tag(connectivity);
+    tag(offset_block);
+    tag(type_block);
+    out << "      </Cells>\n      <CellData Scalars=\"face\">\n";
+    tag(face_block);
+    out << "      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n"
+        << "  <AppendedData encoding=\"raw\">\n   _";
+    for (const ArrayBlock* a : {&points, &connectivity, &offset_block, &type_block, &face_block}) {
+      out.write(reinterpret_cast<const char*>(&a->bytes), sizeof a->bytes);
+      out.write(static_cast<const char*>(a->data), static_cast<std::streamsize>(a->bytes));
+    }
+    out << "\n  </AppendedData>\n</VTKFile>\n";
+    return;
+  }
+
+  // ASCII: meant for small meshes, so flat copies of the arrays are fine.
+  std::vector<double> xyz;
+  xyz.reserve(3 * mesh.nodes.size());
+  for (const Vec3& p : mesh.nodes) xyz.insert(xyz.end(), {p.x, p.y, p.z});
+  std::vector<std::int32_t> ids;
+  ids.reserve(4 * cells);
+  for (const Quad& q : mesh.quads) ids.insert(ids.end(), q.begin(), q.end());
+  auto block = [&](const ArrayBlock& a, const auto& values, int per_line) {
+    write_data_array_tag(out, a, "ascii", 0);
+    write_ascii_values(out, values.data(), values.size(), per_line);
+    out << "        </DataArray>\n";
+  };
+  out << "      <Points>\n";
+  block(points, xyz, 3);
+  out << "      </Points>\n      <Cells>\n";
+  block(connectivity, ids, 4);
+  block(offset_block, offsets, 16);
+  block(type_block, types, 32);
+  out << "      </Cells>\n      <CellData Scalars=\"face\">\n";
+  block(face_block, face, 32);
+  out << "      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
+}
+
+void write_vtu_file(const std::string& path, const QuadMesh& mesh, VtuEncoding encoding) {
+  write_file_atomically(path, [&](std::ostream& out) { write_vtu(out, mesh, encoding); });
+}
+
+}  // namespace tquad
