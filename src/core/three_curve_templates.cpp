@@ -41,7 +41,10 @@ Barycentric normalized(double l0, double l1, double l2) {
 // cevian intersections (they coincide when the splits satisfy Ceva's condition, e.g.
 // at the midpoints of an equilateral triangle). Placing it from the split parameters,
 // which come from 3D lengths, draws it towards a curve whose interior line has few
-// edges, as eq. 6's counts ask; being a convex combination it stays inside.
+// edges, as eq. 6's counts ask; being a convex combination it stays inside. On the
+// property cases it beat the mean of the three split nodes (mean worst scaled
+// Jacobian of convex three-curve meshes before repair 0.232 against 0.205) and
+// barycentric weights from the line counts (0.232 against -0.07).
 Barycentric trimap_centre(double t0, double t1, double t2) {
   const double r0 = (1 - t0) / t0;  // l0 / l1 on the cevian from V2 through M0
   const double r1 = (1 - t1) / t1;  // l1 / l2 on the cevian from V0 through M1
