@@ -1,0 +1,42 @@
+// ShapeMesh: the mesh of several faces (a CAD shape, or one boundary region as face 0)
+// in one node array, so faces that share boundary nodes are conforming. This is what
+// the file writers and the report take.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/quad_mesh.h"
+
+namespace tquad {
+
+struct FaceMesh {
+  int face = 0;               // index of the face in the shape (0-based)
+  std::string template_tree;  // e.g. "T2[T0,T0,T1[T0,T0,T0,T0]]"
+  std::int64_t first_quad = 0;
+  std::int64_t quad_count = 0;
+};
+
+struct RefusedFace {
+  int face = 0;
+  std::string reason;
+};
+
+struct ShapeMesh {
+  std::vector<Vec3> nodes;
+  std::vector<Quad> quads;
+  std::vector<FaceMesh> faces;  // in quad order: face k owns quads [first, first + count)
+  std::vector<RefusedFace> refused_faces;
+};
+
+// One boundary region as a shape of one face (face 0), moving the mesh's arrays.
+inline ShapeMesh single_face_mesh(QuadMesh&& mesh) {
+  ShapeMesh shape;
+  shape.nodes = std::move(mesh.nodes);
+  shape.quads = std::move(mesh.quads);
+  shape.faces.push_back({0, mesh.template_tree, 0, static_cast<std::int64_t>(shape.quads.size())});
+  return shape;
+}
+
+}  // namespace tquad

@@ -1,0 +1,77 @@
+#include "occ/edge_discretization.h"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRep_Tool.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
+#include <GCPnts_UniformAbscissa.hxx>
+#include <TopExp.hxx>
+#include <TopoDS.hxx>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace tquad {
+
+namespace {
+
+Vec3 to_vec3(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
+
+TopoDS_Edge forward(const TopoDS_Edge& e) { return TopoDS::Edge(e.Oriented(TopAbs_FORWARD)); }
+
+}  // namespace
+
+std::vector<int> edge_segment_counts(const ShapeIndex& index, double size, std::vector<double>& lengths) {
+  std::vector<int> segments(index.edge_count(), 0);
+  lengths.assign(index.edge_count(), 0.0);
+  for (int e = 0; e < index.edge_count(); ++e) {
+    const TopoDS_Edge edge = forward(index.edge(e));
+    if (BRep_Tool::Degenerated(edge)) continue;
+    const BRepAdaptor_Curve curve(edge);
+    lengths[e] = GCPnts_AbscissaPoint::Length(curve);
+    segments[e] = std::max(1, static_cast<int>(std::lround(lengths[e] / size)));
+  }
+  return segments;
+}
+
+std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vector<int>& segments,
+                                        std::vector<Vec3>& nodes) {
+  nodes.clear();
+  for (int v = 0; v < index.vertex_count(); ++v) nodes.push_back(to_vec3(BRep_Tool::Pnt(index.vertex(v))));
+
+  std::vector<EdgeNodes> result(index.edge_count());
+  for (int e = 0; e < index.edge_count(); ++e) {
+    const TopoDS_Edge edge = forward(index.edge(e));
+    TopoDS_Vertex first, last;
+    TopExp::Vertices(edge, first, last);
+    EdgeNodes& out = result[e];
+    double u0 = 0, u1 = 0;
+    BRep_Tool::Range(edge, u0, u1);
+    if (BRep_Tool::Degenerated(edge)) {
+      out.degenerate = true;
+      out.params = {u0, u1};
+      out.nodes = {index.vertex_index(first), index.vertex_index(last)};
+      continue;
+    }
+    const int n = segments[e];
+    if (n <= 0) continue;
+    const BRepAdaptor_Curve curve(edge);
+    out.params.push_back(u0);
+    if (n > 1) {
+      GCPnts_UniformAbscissa spacing(curve, n + 1, u0, u1);
+      if (!spacing.IsDone() || spacing.NbPoints() != n + 1) {
+        throw std::runtime_error("arc-length discretization of edge " + std::to_string(e) + " failed");
+      }
+      for (int i = 2; i <= n; ++i) out.params.push_back(spacing.Parameter(i));
+    }
+    out.params.push_back(u1);
+    out.nodes.push_back(index.vertex_index(first));
+    for (int i = 1; i < n; ++i) {
+      out.nodes.push_back(static_cast<NodeId>(nodes.size()));
+      nodes.push_back(to_vec3(curve.Value(out.params[i])));
+    }
+    out.nodes.push_back(index.vertex_index(last));
+  }
+  return result;
+}
+
+}  // namespace tquad

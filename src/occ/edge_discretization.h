@@ -1,0 +1,30 @@
+// Edge discretization: every edge of the shape is cut once, by arc length on its 3D
+// curve, so the faces it bounds share its nodes (a closed solid meshes watertight).
+// Vertex nodes come first in the node array, then each edge's inner nodes.
+#pragma once
+
+#include <vector>
+
+#include "core/quad_mesh.h"
+#include "occ/shape_index.h"
+
+namespace tquad {
+
+struct EdgeNodes {
+  bool degenerate = false;     // a collapsed edge (cone apex, sphere pole): one point
+  double length = 0.0;
+  std::vector<double> params;  // curve parameters of the nodes, first to last
+  std::vector<NodeId> nodes;   // node ids along the edge's FORWARD orientation
+};
+
+// Segments of each edge from the target size: round(length / size), at least 1;
+// degenerate edges get 0.
+std::vector<int> edge_segment_counts(const ShapeIndex& index, double size,
+                                     std::vector<double>& lengths);
+
+// Places the nodes: vertices (nodes 0 .. vertex_count-1), then the inner nodes of each
+// edge with segments[e] > 0 (edges of unmeshed faces can be given 0 and are skipped).
+std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vector<int>& segments,
+                                        std::vector<Vec3>& nodes);
+
+}  // namespace tquad

@@ -1,0 +1,116 @@
+#include "occ/face_boundary.h"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepTools.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom2d_Curve.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Wire.hxx>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace tquad {
+
+namespace {
+
+Vec3 to_vec3(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
+
+// Unit tangent of an edge occurrence, in its direction of travel, at parameter t.
+Vec3 travel_tangent(const TopoDS_Edge& occurrence, double t) {
+  const BRepAdaptor_Curve curve(occurrence);
+  gp_Pnt p;
+  gp_Vec d;
+  curve.D1(t, p, d);
+  Vec3 v = to_vec3(d);
+  if (occurrence.Orientation() == TopAbs_REVERSED) v = -1.0 * v;
+  const double length = norm(v);
+  return length > 0 ? (1.0 / length) * v : v;
+}
+
+// Outer normal of the face at (u, v).
+Vec3 face_normal(const TopoDS_Face& face, double u, double v) {
+  const BRepAdaptor_Surface surface(face);
+  gp_Pnt p;
+  gp_Vec du, dv;
+  surface.D1(u, v, p, du, dv);
+  Vec3 n = to_vec3(du.Crossed(dv));
+  if (face.Orientation() == TopAbs_REVERSED) n = -1.0 * n;
+  const double length = norm(n);
+  return length > 0 ? (1.0 / length) * n : n;
+}
+
+}  // namespace
+
+double signed_uv_area(const std::vector<Vec3>& uv) {
+  double twice = 0;
+  for (std::size_t i = 0; i < uv.size(); ++i) {
+    const Vec3& a = uv[i];
+    const Vec3& b = uv[(i + 1) % uv.size()];
+    twice += a.x * b.y - b.x * a.y;
+  }
+  return 0.5 * twice;
+}
+
+bool runs_counter_clockwise(const FaceBoundary& b, const TopoDS_Face& face) {
+  return (signed_uv_area(b.uv) > 0) == (face.Orientation() != TopAbs_REVERSED);
+}
+
+FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::vector<EdgeNodes>& edges,
+                           const std::vector<Vec3>& /*nodes*/) {
+  const TopoDS_Face& face = index.face(face_index);
+  const TopoDS_Wire outer = BRepTools::OuterWire(face);
+  FaceBoundary b;
+  for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) {
+    if (!w.Current().IsSame(outer)) ++b.inner_wires;
+  }
+  struct Occurrence {
+    TopoDS_Edge edge;
+    double first_param, last_param;  // in travel order
+  };
+  std::vector<Occurrence> occurrences;
+  for (BRepTools_WireExplorer it(outer, face); it.More(); it.Next()) {
+    const TopoDS_Edge& occurrence = it.Current();
+    const int e = index.edge_index(occurrence);
+    const EdgeNodes& en = edges[e];
+    if (en.degenerate) { b.has_degenerate_edge = true; continue; }
+    double f = 0, l = 0;
+    const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(occurrence, face, f, l);
+    if (pcurve.IsNull()) throw std::runtime_error("edge " + std::to_string(e) + " has no pcurve on face " + std::to_string(face_index));
+    const bool reversed = occurrence.Orientation() == TopAbs_REVERSED;
+    const int n = static_cast<int>(en.nodes.size()) - 1;
+    b.edge_start.push_back(static_cast<int>(b.nodes.size()));
+    b.start_vertex.push_back(en.nodes[reversed ? n : 0]);
+    for (int k = 0; k < n; ++k) {  // the last node is the next edge's first
+      const int i = reversed ? n - k : k;
+      b.nodes.push_back(en.nodes[i]);
+      const gp_Pnt2d p = pcurve->Value(en.params[i]);
+      b.uv.push_back({p.X(), p.Y(), 0.0});
+    }
+    occurrences.push_back({occurrence, reversed ? en.params[n] : en.params[0], reversed ? en.params[0] : en.params[n]});
+  }
+  // Turning angle at each edge start: from the previous occurrence's end tangent to
+  // this one's start tangent, signed by the face normal there.
+  const int count = static_cast<int>(occurrences.size());
+  double total = 0;
+  for (int k = 0; k < count; ++k) {
+    const Occurrence& in = occurrences[(k + count - 1) % count];
+    const Occurrence& out = occurrences[k];
+    const Vec3 a = travel_tangent(in.edge, in.last_param), c = travel_tangent(out.edge, out.first_param);
+    const Vec3& uv = b.uv[b.edge_start[k]];
+    const double angle = std::atan2(dot(cross(a, c), face_normal(face, uv.x, uv.y)), dot(a, c));
+    b.turn.push_back(angle);
+    total += angle;
+  }
+  (void)total;
+  // Convex corners turn left around the outer normal when the loop runs
+  // counter-clockwise around it: counter-clockwise in (u, v) for a FORWARD face,
+  // clockwise for a REVERSED one. Otherwise the signs are flipped.
+  if (!runs_counter_clockwise(b, face)) for (double& t : b.turn) t = -t;
+  return b;
+}
+
+}  // namespace tquad

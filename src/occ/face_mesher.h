@@ -1,0 +1,35 @@
+// mesh_face: one face's quads from its boundary loop.
+//
+// The template mesh is built in the face's (u, v) parameter space, where the edges'
+// pcurves give the boundary, and every interior node is the surface evaluated once at
+// its (u, v): nodes lie on the face by construction. Where the (u, v) loop is not a
+// clean polygon (a pcurve crossing itself, a seam shifted by a period), the mesh is
+// built from the 3D loop instead (paper, section 3: the 3D mapping) and each interior
+// node is projected onto the surface, warm-started from the previous node's (u, v).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/mesher.h"
+#include "occ/face_boundary.h"
+#include "occ/shape_index.h"
+
+namespace tquad {
+
+struct FaceMeshResult {
+  // Local node numbering: i < loop size is boundary.nodes[i], else interior[i - size].
+  std::vector<Quad> quads;
+  std::vector<Vec3> interior;
+  std::string template_tree;
+  bool used_projection = false;  // the 3D fallback was used
+  long long inverted = 0;        // quads still inverted after repair
+};
+
+// Quads come counter-clockwise around the face's outer normal. Throws InputError with
+// the reason when neither route meshes the face.
+FaceMeshResult mesh_face(const ShapeIndex& index, int face, const FaceBoundary& boundary,
+                         const std::vector<int>& corners, const std::vector<Vec3>& nodes,
+                         const MeshOptions& options);
+
+}  // namespace tquad

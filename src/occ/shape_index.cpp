@@ -1,0 +1,33 @@
+#include "occ/shape_index.h"
+
+#include <TopExp.hxx>
+#include <TopoDS.hxx>
+
+#include <algorithm>
+
+namespace tquad {
+
+ShapeIndex::ShapeIndex(const TopoDS_Shape& shape) {
+  TopExp::MapShapes(shape, TopAbs_FACE, faces_);
+  TopExp::MapShapes(shape, TopAbs_EDGE, edges_);
+  TopExp::MapShapes(shape, TopAbs_VERTEX, vertices_);
+  TopTools_IndexedDataMapOfShapeListOfShape ancestors;
+  TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, ancestors);
+  faces_of_edge_.resize(edges_.Extent());
+  for (int e = 1; e <= edges_.Extent(); ++e) {
+    const int k = ancestors.FindIndex(edges_(e));
+    if (k == 0) continue;
+    std::vector<int>& list = faces_of_edge_[e - 1];
+    for (const TopoDS_Shape& f : ancestors(k)) {
+      const int index = faces_.FindIndex(f) - 1;
+      if (std::find(list.begin(), list.end(), index) == list.end()) list.push_back(index);
+    }
+    std::sort(list.begin(), list.end());
+  }
+}
+
+const TopoDS_Face& ShapeIndex::face(int i) const { return TopoDS::Face(faces_(i + 1)); }
+const TopoDS_Edge& ShapeIndex::edge(int i) const { return TopoDS::Edge(edges_(i + 1)); }
+const TopoDS_Vertex& ShapeIndex::vertex(int i) const { return TopoDS::Vertex(vertices_(i + 1)); }
+
+}  // namespace tquad

@@ -1,0 +1,41 @@
+// ShapeIndex: the faces, edges and vertices of a shape, numbered once (0-based, in
+// TopExp::MapShapes order, which is FreeCAD's Shape.Faces order), and which faces
+// each edge bounds.
+#pragma once
+
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <TopoDS_Vertex.hxx>
+
+#include <vector>
+
+namespace tquad {
+
+class ShapeIndex {
+ public:
+  explicit ShapeIndex(const TopoDS_Shape& shape);
+
+  int face_count() const { return faces_.Extent(); }
+  int edge_count() const { return edges_.Extent(); }
+  int vertex_count() const { return vertices_.Extent(); }
+
+  const TopoDS_Face& face(int i) const;
+  const TopoDS_Edge& edge(int i) const;
+  const TopoDS_Vertex& vertex(int i) const;
+
+  int face_index(const TopoDS_Shape& face) const { return faces_.FindIndex(face) - 1; }
+  int edge_index(const TopoDS_Shape& edge) const { return edges_.FindIndex(edge) - 1; }
+  int vertex_index(const TopoDS_Shape& vertex) const { return vertices_.FindIndex(vertex) - 1; }
+
+  // Indices of the distinct faces an edge bounds (a seam edge bounds its face once).
+  const std::vector<int>& faces_of_edge(int edge) const { return faces_of_edge_[edge]; }
+
+ private:
+  TopTools_IndexedMapOfShape faces_, edges_, vertices_;
+  std::vector<std::vector<int>> faces_of_edge_;
+};
+
+}  // namespace tquad

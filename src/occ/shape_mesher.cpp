@@ -1,0 +1,158 @@
+#include "occ/shape_mesher.h"
+
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
+#include <TopExp_Explorer.hxx>
+
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <thread>
+
+#include "core/input_error.h"
+#include "occ/edge_discretization.h"
+#include "occ/face_boundary.h"
+#include "occ/face_corners.h"
+#include "occ/face_mesher.h"
+#include "occ/shape_index.h"
+
+namespace tquad {
+
+namespace {
+
+double default_size(const TopoDS_Shape& shape) {
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box);
+  if (box.IsVoid()) return 1.0;
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  return std::sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0) + (z1 - z0) * (z1 - z0)) / 25.0;
+}
+
+std::vector<char> meshed_faces(const ShapeIndex& index, const std::vector<int>& faces) {
+  std::vector<char> meshed(index.face_count(), faces.empty() ? 1 : 0);
+  for (int f : faces) {
+    if (f < 0 || f >= index.face_count()) {
+      throw InputError("face " + std::to_string(f) + " does not exist; the shape has faces 0.." +
+                       std::to_string(index.face_count() - 1));
+    }
+    meshed[f] = 1;
+  }
+  return meshed;
+}
+
+struct FaceOutcome {
+  bool ok = false;
+  std::string reason;
+  FaceBoundary boundary;
+  FaceMeshResult mesh;
+};
+
+FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<EdgeNodes>& edges,
+                          const std::vector<Vec3>& nodes, const ShapeMeshOptions& options) {
+  FaceOutcome outcome;
+  try {
+    outcome.boundary = face_boundary(index, f, edges, nodes);
+    const auto requested = options.corners.find(f);
+    const std::vector<int> corners = choose_face_corners(
+        outcome.boundary, f, requested == options.corners.end() ? std::vector<int>{} : requested->second);
+    outcome.mesh = mesh_face(index, f, outcome.boundary, corners, nodes, options.templates);
+    outcome.ok = true;
+  } catch (const InputError& e) {
+    outcome.reason = e.what();
+  } catch (const std::exception& e) {
+    outcome.reason = std::string("face ") + std::to_string(f) + ": internal failure: " + e.what();
+  }
+  return outcome;
+}
+
+// Removes the nodes no quad uses (vertices and edge nodes of faces not meshed or
+// refused, seam nodes of refused faces), keeping the others in order.
+void drop_unused_nodes(ShapeMesh& mesh) {
+  std::vector<NodeId> new_id(mesh.nodes.size(), -1);
+  for (const Quad& q : mesh.quads) for (NodeId n : q) new_id[n] = 0;
+  NodeId next = 0;
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+    if (new_id[i] < 0) continue;
+    new_id[i] = next;
+    mesh.nodes[next++] = mesh.nodes[i];
+  }
+  mesh.nodes.resize(next);
+  for (Quad& q : mesh.quads) for (NodeId& n : q) n = new_id[n];
+}
+
+// Runs job(i) for i in [0, count) on `threads` workers.
+template <typename Job>
+void run_parallel(int count, int threads, const Job& job) {
+  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  threads = std::min(threads, std::max(1, count));
+  std::atomic<int> next{0};
+  std::vector<std::thread> workers;
+  for (int t = 0; t < threads; ++t) {
+    workers.emplace_back([&] {
+      for (int i = next++; i < count; i = next++) job(i);
+    });
+  }
+  for (std::thread& w : workers) w.join();
+}
+
+}  // namespace
+
+ShapeMeshResult mesh_shape(const TopoDS_Shape& shape, const ShapeMeshOptions& options) {
+  const ShapeIndex index(shape);
+  const std::vector<char> meshed = meshed_faces(index, options.faces);
+  ShapeMeshResult result;
+  result.size = options.size > 0 ? options.size : default_size(shape);
+
+  std::vector<double> lengths;
+  std::vector<int> segments = edge_segment_counts(index, result.size, lengths);
+  // Only edges of meshed faces are discretized.
+  std::vector<char> needed(index.edge_count(), 0);
+  for (int f = 0; f < index.face_count(); ++f) {
+    if (!meshed[f]) continue;
+    for (TopExp_Explorer it(index.face(f), TopAbs_EDGE); it.More(); it.Next()) needed[index.edge_index(it.Current())] = 1;
+  }
+  for (int e = 0; e < index.edge_count(); ++e) if (!needed[e]) segments[e] = 0;
+  result.changes = assign_even_intervals(index, meshed, lengths, result.size, segments);
+
+  ShapeMesh& mesh = result.mesh;
+  const std::vector<EdgeNodes> edges = discretize_edges(index, segments, mesh.nodes);
+
+  std::vector<FaceOutcome> outcomes(index.face_count());
+  run_parallel(index.face_count(), options.threads, [&](int f) {
+    if (meshed[f]) outcomes[f] = mesh_one_face(index, f, edges, mesh.nodes, options);
+  });
+
+  for (int f = 0; f < index.face_count(); ++f) {
+    if (meshed[f] && !outcomes[f].ok) mesh.refused_faces.push_back({f, outcomes[f].reason});
+  }
+  if (!mesh.refused_faces.empty() && !options.keep_going) {
+    std::string text = std::to_string(mesh.refused_faces.size()) + " face(s) refused: ";
+    for (std::size_t i = 0; i < mesh.refused_faces.size(); ++i) {
+      text += (i ? "; " : "") + mesh.refused_faces[i].reason;
+    }
+    throw InputError(text + " (--keep-going meshes the other faces)");
+  }
+
+  // Assembly in face order: interior nodes after all edge nodes.
+  for (int f = 0; f < index.face_count(); ++f) {
+    if (!meshed[f] || !outcomes[f].ok) continue;
+    const FaceOutcome& o = outcomes[f];
+    const NodeId loop_size = static_cast<NodeId>(o.boundary.nodes.size());
+    const NodeId base = static_cast<NodeId>(mesh.nodes.size());
+    mesh.nodes.insert(mesh.nodes.end(), o.mesh.interior.begin(), o.mesh.interior.end());
+    const auto first = static_cast<std::int64_t>(mesh.quads.size());
+    for (const Quad& q : o.mesh.quads) {
+      Quad g;
+      for (int k = 0; k < 4; ++k) g[k] = q[k] < loop_size ? o.boundary.nodes[q[k]] : base + (q[k] - loop_size);
+      mesh.quads.push_back(g);
+    }
+    mesh.faces.push_back({f, o.mesh.template_tree, first, static_cast<std::int64_t>(o.mesh.quads.size())});
+    result.projected_faces += o.mesh.used_projection ? 1 : 0;
+    result.inverted += o.mesh.inverted;
+  }
+  drop_unused_nodes(mesh);
+  return result;
+}
+
+}  // namespace tquad

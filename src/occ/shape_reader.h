@@ -1,0 +1,21 @@
+// read_shape: a CAD shape from a STEP, IGES or BREP file, or from BREP text (what
+// FreeCAD's Shape.exportBrepToString() gives).
+#pragma once
+
+#include <TopoDS_Shape.hxx>
+
+#include <string>
+
+namespace tquad {
+
+// The file's format follows its extension: .step/.stp, .iges/.igs, .brep/.brp.
+// Throws InputError naming the file when it cannot be read or holds no face.
+TopoDS_Shape read_shape(const std::string& path);
+
+// Throws InputError when the text is not a BREP shape with at least one face.
+TopoDS_Shape read_brep_text(const std::string& brep);
+
+// True for the extensions read_shape reads.
+bool is_shape_path(const std::string& path);
+
+}  // namespace tquad
