@@ -6,6 +6,7 @@
 #include <BRep_Tool.hxx>
 
 #include <algorithm>
+#include <optional>
 
 #include "core/input_error.h"
 #include "core/planar_self_intersection.h"
@@ -25,22 +26,52 @@ void take_quads(const QuadMesh& mesh, bool reverse, FaceMeshResult& out) {
   out.template_tree = mesh.template_tree;
 }
 
-long long inverted_quads(const QuadMesh& mesh, const std::optional<Vec3>& normal) {
-  return summarize_quality(mesh, normal).inverted;
+// Quads with a corner inverted against the face's outer normal at the quad's centre,
+// in space: uv[i] and xyz[i] are local node i's parameters and position.
+long long inverted_on_surface(const TopoDS_Face& face, const std::vector<Quad>& quads,
+                              const std::vector<Vec3>& uv, const std::vector<Vec3>& xyz) {
+  const BRepAdaptor_Surface surface(face);
+  long long inverted = 0;
+  for (const Quad& q : quads) {
+    Vec3 centre;
+    for (NodeId n : q) centre += 0.25 * uv[n];
+    gp_Pnt p;
+    gp_Vec du, dv;
+    surface.D1(centre.x, centre.y, p, du, dv);
+    gp_Vec outer = du.Crossed(dv);
+    if (face.Orientation() == TopAbs_REVERSED) outer.Reverse();
+    const Vec3 normal{outer.X(), outer.Y(), outer.Z()};
+    for (int i = 0; i < 4; ++i) {
+      const Vec3 a = xyz[q[(i + 1) % 4]] - xyz[q[i]], b = xyz[q[(i + 3) % 4]] - xyz[q[i]];
+      const double scale = norm(a) * norm(b) * norm(normal);
+      if (scale == 0 || dot(cross(a, b), normal) < -kInvertedBelow * scale) { ++inverted; break; }
+    }
+  }
+  return inverted;
+}
+
+// Local positions and parameters: the loop's nodes, then the interior ones.
+std::vector<Vec3> local_positions(const FaceBoundary& b, const std::vector<Vec3>& nodes,
+                                  const std::vector<Vec3>& interior) {
+  std::vector<Vec3> xyz;
+  for (NodeId id : b.nodes) xyz.push_back(nodes[id]);
+  xyz.insert(xyz.end(), interior.begin(), interior.end());
+  return xyz;
 }
 
 FaceMeshResult mesh_in_parameter_space(const TopoDS_Face& face, const FaceBoundary& b,
-                                       const std::vector<int>& corners, const MeshOptions& options) {
+                                       const std::vector<int>& corners, const std::vector<Vec3>& nodes,
+                                       const MeshOptions& options) {
   const QuadMesh uv_mesh = mesh_boundary(BoundaryLoop{b.uv, corners}, options);
   FaceMeshResult out;
   take_quads(uv_mesh, !runs_counter_clockwise(b, face), out);
-  out.inverted = inverted_quads(uv_mesh, Vec3{0, 0, signed_uv_area(b.uv) > 0 ? 1.0 : -1.0});
   const BRepAdaptor_Surface surface(face);
   const std::size_t n = b.nodes.size();
   out.interior.reserve(uv_mesh.nodes.size() - n);
   for (std::size_t i = n; i < uv_mesh.nodes.size(); ++i) {
     out.interior.push_back(to_vec3(surface.Value(uv_mesh.nodes[i].x, uv_mesh.nodes[i].y)));
   }
+  out.inverted = inverted_on_surface(face, out.quads, uv_mesh.nodes, local_positions(b, nodes, out.interior));
   return out;
 }
 
@@ -68,31 +99,44 @@ FaceMeshResult mesh_in_space(const TopoDS_Face& face, const FaceBoundary& b, con
   Vec3 outer{du.Crossed(dv).X(), du.Crossed(dv).Y(), du.Crossed(dv).Z()};
   if (face.Orientation() == TopAbs_REVERSED) outer = -1.0 * outer;
   take_quads(mesh, dot(loop_normal, outer) < 0, out);
-  out.inverted = inverted_quads(mesh, std::nullopt);
 
   // Closest points on the surface, each search started from the previous node's
   // (u, v): neighbouring nodes are created one after the other.
-  const Handle(Geom_Surface) geom = BRep_Tool::Surface(face);
+  TopLoc_Location location;  // the surface is stored in the face's local frame
+  const Handle(Geom_Surface) geom = BRep_Tool::Surface(face, location);
   ShapeAnalysis_Surface analysis(geom);
   const double tolerance = BRep_Tool::Tolerance(face);
   gp_Pnt2d previous(b.uv[0].x, b.uv[0].y);
-  const TopLoc_Location location = face.Location();
   const gp_Trsf to_local = location.Transformation().Inverted();
   const gp_Trsf to_global = location.Transformation();
+  std::vector<Vec3> uv = b.uv;
   for (std::size_t i = loop.size(); i < mesh.nodes.size(); ++i) {
     const Vec3& q = mesh.nodes[i];
     const gp_Pnt local = gp_Pnt(q.x, q.y, q.z).Transformed(to_local);
     previous = analysis.NextValueOfUV(previous, local, tolerance);
+    uv.push_back({previous.X(), previous.Y(), 0.0});
     out.interior.push_back(to_vec3(geom->Value(previous.X(), previous.Y()).Transformed(to_global)));
   }
+  out.inverted = inverted_on_surface(face, out.quads, uv, local_positions(b, nodes, out.interior));
   return out;
+}
+
+// "at vertices 3, 7, 8, 12" (or loop positions where no vertex starts).
+std::string corner_text(const FaceBoundary& b, const std::vector<int>& corners) {
+  std::string text = "at vertices";
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const auto it = std::find(b.edge_start.begin(), b.edge_start.end(), corners[i]);
+    text += (i ? ", " : " ") + (it == b.edge_start.end() ? "node " + std::to_string(b.nodes[corners[i]])
+                                                          : std::to_string(b.start_vertex[it - b.edge_start.begin()]));
+  }
+  return text;
 }
 
 }  // namespace
 
 FaceMeshResult mesh_face(const ShapeIndex& index, int face_index, const FaceBoundary& boundary,
                          const std::vector<int>& corners, const std::vector<Vec3>& nodes,
-                         const MeshOptions& options) {
+                         const MeshOptions& options, bool allow_inverted) {
   const TopoDS_Face& face = index.face(face_index);
   const std::string name = "face " + std::to_string(face_index);
   if (boundary.inner_wires > 0) {
@@ -105,20 +149,31 @@ FaceMeshResult mesh_face(const ShapeIndex& index, int face_index, const FaceBoun
   }
   // A degenerate edge (a pole) is one point in space but a segment in (u, v): the
   // parameter-space mesh would collapse quads there, so such a face takes the 3D route,
-  // where the pole is a single loop node.
+  // where the pole is a single loop node. A route that leaves inverted quads gives way
+  // to the other when that one does better.
   std::string uv_problem = "a degenerate edge (pole) collapses quads in (u, v)";
+  std::optional<FaceMeshResult> best;
   if (!boundary.has_degenerate_edge) {
     try {
-      return mesh_in_parameter_space(face, boundary, corners, options);
+      best = mesh_in_parameter_space(face, boundary, corners, nodes, options);
     } catch (const InputError& e) {
       uv_problem = e.what();
     }
   }
-  try {
-    return mesh_in_space(face, boundary, corners, nodes, options);
-  } catch (const InputError& e) {
-    throw InputError(name + " cannot be meshed: in (u, v): " + uv_problem + "; in 3D: " + e.what());
+  if (!best || best->inverted > 0) {
+    try {
+      FaceMeshResult in_space = mesh_in_space(face, boundary, corners, nodes, options);
+      if (!best || in_space.inverted < best->inverted) best = std::move(in_space);
+    } catch (const InputError& e) {
+      if (!best) throw InputError(name + " cannot be meshed: in (u, v): " + uv_problem + "; in 3D: " + e.what());
+    }
   }
+  if (best->inverted > 0 && !allow_inverted) {
+    throw InputError(name + ": " + std::to_string(best->inverted) +
+                     " quads stay inverted after repair (the face is not convex enough for its "
+                     "corners " + corner_text(boundary, corners) + "; try --corners)");
+  }
+  return *best;
 }
 
 }  // namespace tquad

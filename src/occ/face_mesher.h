@@ -27,9 +27,10 @@ struct FaceMeshResult {
 };
 
 // Quads come counter-clockwise around the face's outer normal. Throws InputError with
-// the reason when neither route meshes the face.
+// the reason when neither route meshes the face, or when quads stay inverted after
+// repair and allow_inverted is false (never a silent bad mesh).
 FaceMeshResult mesh_face(const ShapeIndex& index, int face, const FaceBoundary& boundary,
                          const std::vector<int>& corners, const std::vector<Vec3>& nodes,
-                         const MeshOptions& options);
+                         const MeshOptions& options, bool allow_inverted);
 
 }  // namespace tquad

@@ -56,7 +56,7 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
     const auto requested = options.corners.find(f);
     const std::vector<int> corners = choose_face_corners(
         outcome.boundary, f, requested == options.corners.end() ? std::vector<int>{} : requested->second);
-    outcome.mesh = mesh_face(index, f, outcome.boundary, corners, nodes, options.templates);
+    outcome.mesh = mesh_face(index, f, outcome.boundary, corners, nodes, options.templates, options.allow_inverted);
     outcome.ok = true;
   } catch (const InputError& e) {
     outcome.reason = e.what();

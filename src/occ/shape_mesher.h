@@ -29,6 +29,9 @@ struct ShapeMeshOptions {
   int threads = 0;
   // Mesh the other faces when one is refused (and list it); otherwise refuse all.
   bool keep_going = false;
+  // Keep a face whose mesh still has inverted quads after repair (counted in
+  // ShapeMeshResult::inverted) instead of refusing it.
+  bool allow_inverted = false;
 };
 
 struct ShapeMeshResult {

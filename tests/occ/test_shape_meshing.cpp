@@ -1,0 +1,182 @@
+// Meshes every face of the example shapes (resources/shapes) and of the real CAD parts
+// in ../shared/data/cad (skipped when that folder is absent) and checks each mesh:
+// all quads and conforming; watertight where the shape's topology is closed; every
+// node on its face; no quad inverted against the face's outer normal; every refused
+// face with a reason. Prints a table of faces meshed and refused per file.
+#include <gtest/gtest.h>
+
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepBndLib.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <ShapeAnalysis_Surface.hxx>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+
+#include "core/input_error.h"
+#include "occ/shape_index.h"
+#include "occ/shape_mesher.h"
+#include "occ/shape_reader.h"
+
+namespace tquad {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> shape_files(const fs::path& dir) {
+  std::vector<std::string> files;
+  if (!fs::is_directory(dir)) return files;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (is_shape_path(entry.path().string())) files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// Every non-degenerate edge bounds two faces or is a seam: a closed shell.
+bool topology_is_closed(const ShapeIndex& index) {
+  for (int e = 0; e < index.edge_count(); ++e) {
+    if (BRep_Tool::Degenerated(index.edge(e))) continue;
+    const auto& faces = index.faces_of_edge(e);
+    if (faces.size() == 2) continue;
+    if (faces.size() == 1 && BRep_Tool::IsClosed(index.edge(e), index.face(faces[0]))) continue;
+    return false;
+  }
+  return true;
+}
+
+double diagonal(const TopoDS_Shape& shape) {
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box);
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  return std::sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0) + (z1 - z0) * (z1 - z0));
+}
+
+struct FileReport {
+  int faces = 0, meshed = 0, refused = 0;
+  long long quads = 0;
+  bool closed = false;
+};
+
+FileReport check_file(const std::string& path) {
+  FileReport report;
+  const TopoDS_Shape shape = read_shape(path);
+  const ShapeIndex index(shape);
+  ShapeMeshOptions options;
+  options.keep_going = true;
+  const ShapeMeshResult result = mesh_shape(shape, options);
+  const ShapeMesh& mesh = result.mesh;
+  report.faces = index.face_count();
+  report.meshed = static_cast<int>(mesh.faces.size());
+  report.refused = static_cast<int>(mesh.refused_faces.size());
+  report.quads = static_cast<long long>(mesh.quads.size());
+  report.closed = topology_is_closed(index);
+  EXPECT_EQ(report.meshed + report.refused, report.faces) << path;
+  for (const RefusedFace& r : mesh.refused_faces) {
+    EXPECT_FALSE(r.reason.empty()) << path << " face " << r.face;
+  }
+
+  // Conforming everywhere; watertight when the shape is closed and nothing refused.
+  std::map<std::pair<NodeId, NodeId>, int> uses;
+  for (const Quad& q : mesh.quads) {
+    for (int i = 0; i < 4; ++i) {
+      for (int j = 0; j < i; ++j) EXPECT_NE(q[i], q[j]) << path << ": a quad repeats a node";
+      const NodeId a = q[i], b = q[(i + 1) % 4];
+      ++uses[{std::min(a, b), std::max(a, b)}];
+    }
+  }
+  const bool watertight_expected = report.closed && report.refused == 0;
+  for (const auto& [edge, count] : uses) {
+    EXPECT_LE(count, 2) << path << ": mesh edge " << edge.first << "-" << edge.second << " in " << count << " quads";
+    if (watertight_expected) EXPECT_EQ(count, 2) << path << ": open mesh edge " << edge.first << "-" << edge.second;
+  }
+
+  // Nodes on their faces; quads facing the outer normal.
+  const double tolerance = 1e-6 * diagonal(shape);
+  for (const FaceMesh& f : mesh.faces) {
+    const TopoDS_Face& face = index.face(f.face);
+    TopLoc_Location location;
+    ShapeAnalysis_Surface surface(BRep_Tool::Surface(face, location));
+    const gp_Trsf to_local = location.Transformation().Inverted();
+    // Boundary nodes lie on edges, which may be off the surface by their tolerance.
+    const double face_tolerance =
+        std::max(tolerance, 2 * std::max(BRep_Tool::MaxTolerance(face, TopAbs_EDGE),
+                                         BRep_Tool::MaxTolerance(face, TopAbs_VERTEX)));
+    const BRepAdaptor_Surface adaptor(face);
+    for (std::int64_t k = f.first_quad; k < f.first_quad + f.quad_count; ++k) {
+      const Quad& q = mesh.quads[k];
+      Vec3 centre;
+      for (NodeId n : q) {
+        const Vec3& p = mesh.nodes[n];
+        centre += 0.25 * p;
+        surface.ValueOfUV(gp_Pnt(p.x, p.y, p.z).Transformed(to_local), face_tolerance);
+        EXPECT_LE(surface.Gap(), face_tolerance) << path << " face " << f.face << " node " << n;
+      }
+      const gp_Pnt2d uv = surface.ValueOfUV(gp_Pnt(centre.x, centre.y, centre.z).Transformed(to_local), face_tolerance);
+      gp_Pnt p;
+      gp_Vec du, dv;
+      adaptor.D1(uv.X(), uv.Y(), p, du, dv);
+      gp_Vec outer = du.Crossed(dv);  // the adaptor includes the location
+      if (face.Orientation() == TopAbs_REVERSED) outer.Reverse();
+      const Vec3 n{outer.X(), outer.Y(), outer.Z()};
+      for (int i = 0; i < 4; ++i) {
+        const Vec3 a = mesh.nodes[q[(i + 1) % 4]] - mesh.nodes[q[i]];
+        const Vec3 b = mesh.nodes[q[(i + 3) % 4]] - mesh.nodes[q[i]];
+        const double s = dot(cross(a, b), n) / (norm(a) * norm(b) * norm(n));
+        EXPECT_GT(s, -1e-9) << path << " face " << f.face << ": quad " << k << " inverted at corner " << i;
+      }
+    }
+  }
+  return report;
+}
+
+void check_folder(const fs::path& dir) {
+  const auto files = shape_files(dir);
+  ASSERT_FALSE(files.empty()) << "no shape files in " << dir;
+  for (const std::string& path : files) {
+    SCOPED_TRACE(path);
+    const FileReport r = check_file(path);
+    std::printf("[ shapes   ] %-28s faces %3d meshed %3d refused %2d quads %6lld %s\n",
+                fs::path(path).filename().c_str(), r.faces, r.meshed, r.refused, r.quads,
+                r.closed ? "closed" : "open");
+  }
+}
+
+TEST(ShapeMeshing, ExampleShapes) { check_folder(fs::path(TQUAD_SOURCE_DIR) / "resources" / "shapes"); }
+
+TEST(ShapeMeshing, SharedCadParts) {
+  const fs::path dir(TQUAD_SHARED_CAD_DIR);
+  if (!fs::is_directory(dir)) GTEST_SKIP() << "no CAD parts at " << dir << " (they are not shipped)";
+  check_folder(dir);
+}
+
+TEST(ShapeMeshing, OutputDoesNotDependOnThreads) {
+  const TopoDS_Shape shape = read_shape(std::string(TQUAD_SOURCE_DIR) + "/resources/shapes/filleted_bracket.brep");
+  ShapeMeshOptions one, many;
+  one.threads = 1;
+  many.threads = 4;
+  one.keep_going = many.keep_going = true;
+  const ShapeMesh a = mesh_shape(shape, one).mesh, b = mesh_shape(shape, many).mesh;
+  ASSERT_EQ(a.quads, b.quads);
+  ASSERT_EQ(a.nodes.size(), b.nodes.size());
+  for (std::size_t i = 0; i < a.nodes.size(); ++i) ASSERT_TRUE(a.nodes[i] == b.nodes[i]) << "node " << i;
+}
+
+TEST(ShapeMeshing, RefusedFacesNameTheFace) {
+  const fs::path part = fs::path(TQUAD_SHARED_CAD_DIR) / "t20_data.step";
+  if (!fs::exists(part)) GTEST_SKIP() << "no " << part;
+  ShapeMeshOptions options;
+  try {
+    mesh_shape(read_shape(part.string()), options);
+    FAIL() << "a face with a hole should be refused without --keep-going";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("face 0 has 1 inner wire"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace tquad
