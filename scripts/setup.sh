@@ -5,7 +5,6 @@
 #
 #   scripts/setup.sh            install packages (if missing) and build into build/
 #   scripts/setup.sh --no-build install packages only
-#   scripts/setup.sh --peers    also install the peers the benchmarks compare with
 set -euo pipefail
 
 repo_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -19,12 +18,14 @@ packages=(
   # occ: OpenCASCADE 7.6 (Debian's CMake targets link libtbb, hence libtbb-dev)
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libtbb-dev
+  # tests: real readers and the solver of the files written (meshio, Gmsh, CalculiX);
+  # Gmsh is also the peer of bench/compare_gmsh.py
+  python3-meshio gmsh python3-gmsh calculix-ccx
 )
 for arg in "$@"; do
   case "$arg" in
     --no-build) build=no ;;
-    --peers) packages+=(gmsh python3-gmsh) ;;
-    *) echo "setup: unknown option $arg (use --no-build, --peers)" >&2; exit 2 ;;
+    *) echo "setup: unknown option $arg (use --no-build)" >&2; exit 2 ;;
   esac
 done
 

@@ -6,6 +6,8 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
 
 #include "cli/mesh_command.h"
 
@@ -18,22 +20,25 @@ const char* const exit_status_text =
 
 int run_cli(int argc, char** argv) {
   CLI::App app{"TemplateQuad: all-quadrilateral meshes by hierarchical templates (T0..T5)", "tquad"};
-  app.footer(std::string("Example: tquad mesh plate.json -o plate.vtu --report json\n\n") + exit_status_text);
+  app.footer(std::string("Examples: tquad mesh plate.json -o plate.vtu --report json\n"
+                        "          tquad mesh part.step -o part.inp --size 2 --keep-going\n\n") + exit_status_text);
   app.set_version_flag("--version", "tquad 0.1.0");
   app.require_subcommand(1);
 
   tquad::MeshCommand command;
   std::string report;
-  CLI::App* mesh = app.add_subcommand("mesh", "Mesh a boundary (or, later, a CAD shape) into quads");
+  CLI::App* mesh = app.add_subcommand("mesh", "Mesh a boundary or the faces of a CAD shape into quads");
   mesh->add_option("input", command.input,
                    "Boundary file .json: {\"points\": [[x,y,z] or [x,y], ...], \"corners\": [i, ...]},\n"
-                   "a closed loop with an even number of points and 2, 3 or 4 corners.\n"
-                   "CAD input (.step .stp .brep .iges .igs) is not yet supported in this build.")
+                   "a closed loop with an even number of points and 2, 3 or 4 corners;\n"
+                   "or a CAD shape (.step .stp .iges .igs .brep): every face of every solid\n"
+                   "and shell is meshed, conforming across shared edges.")
       ->type_name("INPUT")
       ->required();
   mesh->add_option("-o,--output", command.output,
                    "Output file; the format follows the extension: .json (mesh JSON), .vtu (VTK\n"
-                   "XML, binary), .svg (drawing with subregion boundaries)")
+                   "XML, binary), .inp (Abaqus/CalculiX, S4 shells, element set FACE<k> per\n"
+                   "face and EALL), .msh (Gmsh 4.1 ASCII), .svg (drawing with subregion boundaries)")
       ->type_name("OUTPUT")
       ->required();
   mesh->add_option("--report", report,
@@ -56,6 +61,31 @@ int run_cli(int argc, char** argv) {
       ->type_name("N")
       ->check(CLI::Range(1LL, LLONG_MAX).description(""))
       ->capture_default_str();
+  mesh->add_option("--size", command.shape.size,
+                   "CAD input: target edge length (default: the shape's bounding-box\n"
+                   "diagonal / 25). Each edge gets round(length / H) segments, at least 1,\n"
+                   "then counts change by one where a face's total would be odd.")
+      ->type_name("H")
+      ->check(CLI::PositiveNumber.description(""));
+  mesh->add_option("--faces", command.faces,
+                   "CAD input: mesh only these faces (0-based, as FreeCAD's Shape.Faces\n"
+                   "order), e.g. 0,2,5-7")
+      ->type_name("LIST");
+  mesh->add_option("--corners", command.corners,
+                   "CAD input: corners of a face's curves, as shape vertex indices\n"
+                   "(0-based), e.g. --corners 3:0,4,7,2 (repeat for more faces)")
+      ->type_name("FACE:V1,V2,...");
+  mesh->add_flag("--keep-going", command.shape.keep_going,
+                 "CAD input: mesh and write the other faces when one is refused, and list\n"
+                 "the refused faces; without it a refused face stops the job (exit 2)");
+  mesh->add_flag("--allow-inverted", command.shape.allow_inverted,
+                 "CAD input: keep a face whose mesh still has inverted quads after repair\n"
+                 "(reported) instead of refusing it");
+  mesh->add_option("--threads", command.shape.threads,
+                   "CAD input: threads meshing faces (default: all cores); the output is the\n"
+                   "same for any number")
+      ->type_name("N")
+      ->check(CLI::Range(0, 1024).description(""));
   mesh->footer(exit_status_text);
 
   try {
@@ -73,6 +103,9 @@ int run_cli(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // tquad reports problems itself, one line each; OpenCASCADE's readers would print
+  // their own diagnostics on stdout, which --report json keeps for the report.
+  Message::DefaultMessenger()->ChangePrinters().Clear();
   try {
     return run_cli(argc, argv);
   } catch (const std::exception& e) {

@@ -8,22 +8,28 @@
 #include <new>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "core/input_error.h"
 #include "core/mesh_validation.h"
 #include "core/planar_self_intersection.h"
 #include "core/quality.h"
+#include "core/shape_mesh.h"
 #include "io/boundary_json_reader.h"
+#include "io/inp_writer.h"
 #include "io/mesh_json_writer.h"
+#include "io/msh_writer.h"
 #include "io/report_json.h"
 #include "io/svg_writer.h"
 #include "io/vtu_writer.h"
+#include "cli/shape_arguments.h"
+#include "occ/shape_reader.h"
 
 namespace tquad {
 
 namespace {
 
-enum class OutputFormat { json, vtu, svg };
+enum class OutputFormat { json, vtu, inp, msh, svg };
 
 std::string lower_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -32,26 +38,23 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-void check_input_format(const std::string& path) {
-  const std::string ext = lower_extension(path);
-  if (ext == ".json") return;
-  if (ext == ".step" || ext == ".stp" || ext == ".brep" || ext == ".iges" || ext == ".igs") {
-    throw InputError(path + ": CAD input (" + ext +
-                     ") is not yet supported in this build; give a .json boundary");
-  }
-  throw InputError(path + ": unknown input format '" + ext +
-                   "'; expected a .json boundary (or .step/.stp/.brep/.iges/.igs, not yet supported)");
+enum class InputKind { boundary, shape };
+
+InputKind input_kind(const std::string& path) {
+  if (lower_extension(path) == ".json") return InputKind::boundary;
+  if (is_shape_path(path)) return InputKind::shape;
+  throw InputError(path + ": unknown input format '" + lower_extension(path) +
+                   "'; expected a .json boundary or a CAD shape (.step .stp .iges .igs .brep)");
 }
 
 OutputFormat output_format(const std::string& path) {
   const std::string ext = lower_extension(path);
   if (ext == ".json") return OutputFormat::json;
   if (ext == ".vtu") return OutputFormat::vtu;
+  if (ext == ".inp") return OutputFormat::inp;
+  if (ext == ".msh") return OutputFormat::msh;
   if (ext == ".svg") return OutputFormat::svg;
-  if (ext == ".inp" || ext == ".msh") {
-    throw InputError(path + ": output format " + ext + " is not yet supported in this build; use .json, .vtu or .svg");
-  }
-  throw InputError(path + ": unknown output format '" + ext + "'; use .json, .vtu or .svg");
+  throw InputError(path + ": unknown output format '" + ext + "'; use .json, .vtu, .inp, .msh or .svg");
 }
 
 std::string fixed(double value, int digits) {
@@ -60,33 +63,44 @@ std::string fixed(double value, int digits) {
   return buffer;
 }
 
-void print_summary(std::ostream& out, const MeshCommand& command, const QuadMesh& mesh,
-                   const QualitySummary& quality, double seconds) {
-  out << command.input << " -> " << command.output << "\n"
-      << "  nodes " << mesh.nodes.size() << ", quads " << mesh.quads.size() << "\n"
-      << "  template tree " << mesh.template_tree << "\n"
-      << "  Lee-Lo min " << fixed(quality.lee_lo.min, 3) << " avg " << fixed(quality.lee_lo.avg, 3)
-      << "; scaled Jacobian min " << fixed(quality.scaled_jacobian.min, 3) << " avg "
-      << fixed(quality.scaled_jacobian.avg, 3) << "\n"
-      << "  inverted " << quality.inverted << ", degenerate " << quality.degenerate << "; time "
-      << fixed(seconds, 3) << " s\n";
-}
-
 // Messages are one line on stderr.
 std::string one_line(std::string text) {
   std::replace(text.begin(), text.end(), '\n', ' ');
   return text;
 }
 
-int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
-  check_input_format(command.input);
-  const OutputFormat format = output_format(command.output);  // before the work
-  std::error_code ec;
-  if (std::filesystem::equivalent(command.input, command.output, ec)) {
-    throw InputError(command.output + ": the output file is the input file");
+void print_summary(std::ostream& out, const MeshCommand& command, const ShapeMesh& mesh,
+                   const QualitySummary& quality, double seconds, const ShapeMeshResult* shape) {
+  out << command.input << " -> " << command.output << "\n"
+      << "  nodes " << mesh.nodes.size() << ", quads " << mesh.quads.size() << "\n";
+  if (shape) {
+    out << "  edge size " << shape->size << "; " << shape->changes.size()
+        << " edge count(s) changed for even faces";
+    for (const IntervalChange& c : shape->changes) {
+      out << " (edge " << c.edge << ": " << c.from << " -> " << c.to << ")";
+    }
+    out << "\n";
   }
-  const auto start = std::chrono::steady_clock::now();
+  if (mesh.faces.size() == 1 && mesh.refused_faces.empty()) {
+    out << "  template tree " << mesh.faces[0].template_tree << "\n";
+  } else {
+    out << "  faces " << mesh.faces.size() << " meshed, " << mesh.refused_faces.size() << " refused\n";
+    for (const FaceMesh& f : mesh.faces) {
+      out << "  face " << f.face << ": " << f.quad_count << " quads, template tree " << f.template_tree << "\n";
+    }
+    for (const RefusedFace& f : mesh.refused_faces) {
+      out << "  face " << f.face << " refused: " << one_line(f.reason) << "\n";
+    }
+  }
+  out << "  Lee-Lo min " << fixed(quality.lee_lo.min, 3) << " avg " << fixed(quality.lee_lo.avg, 3)
+      << "; scaled Jacobian min " << fixed(quality.scaled_jacobian.min, 3) << " avg "
+      << fixed(quality.scaled_jacobian.avg, 3) << "\n"
+      << "  inverted " << quality.inverted << ", degenerate " << quality.degenerate << "; time "
+      << fixed(seconds, 3) << " s\n";
+}
 
+// The boundary path: one region, face 0; also drawn as SVG on request.
+ShapeMesh mesh_boundary_input(const MeshCommand& command, OutputFormat format, QualitySummary& quality) {
   const BoundaryLoop loop = read_boundary_json(command.input);
   QuadMesh mesh;
   try {
@@ -102,35 +116,90 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
   Vec3 normal;
   const std::optional<Vec3> reference =
       planar_normal(loop.points, normal) ? std::optional<Vec3>(normal) : std::nullopt;
-  const QualitySummary quality = summarize_quality(mesh, reference);
+  quality = summarize_quality(mesh, reference);
 
+  if (format == OutputFormat::svg) {
+    // The figure draws the template tree's cuts, which only the QuadMesh carries.
+    SvgOptions svg;
+    svg.columns = 1;
+    svg.panel_size = 600;
+    // A curved patch is seen along its loop's mean normal (Newell's), when it has one.
+    const Vec3 newell = newell_normal(loop.points);
+    if (reference) svg.view_normal = reference;
+    else if (norm(newell) > 0) svg.view_normal = newell;
+    const std::string caption = std::to_string(mesh.quads.size()) + " quads: " + mesh.template_tree;
+    write_svg_file(command.output, {SvgPanel{&mesh, boundary_points, caption}}, svg);
+  }
+  // The file writers and the report take a shape's mesh: a boundary input is face 0.
+  return single_face_mesh(std::move(mesh));
+}
+
+// The CAD path: every (selected) face, conforming across shared edges.
+ShapeMesh mesh_shape_input(const MeshCommand& command, OutputFormat format, QualitySummary& quality,
+                           ShapeMeshResult& result) {
+  if (format == OutputFormat::svg) {
+    throw InputError(command.output + ": SVG output draws boundary regions only; use .vtu, .inp, .msh or .json");
+  }
+  ShapeMeshOptions options = command.shape;
+  options.templates = command.options;
+  if (!command.faces.empty()) options.faces = parse_face_list(command.faces);
+  options.corners = parse_corner_specs(command.corners);
+  const TopoDS_Shape shape = read_shape(command.input);
+  try {
+    result = mesh_shape(shape, options);
+  } catch (const InputError& e) {
+    throw InputError(command.input + ": " + e.what());
+  }
+  // Quads of a curved shape are signed by their own normals; the occ layer already
+  // checked each face's quads against the face's outer normal.
+  quality = summarize_quality(result.mesh.nodes, result.mesh.quads, std::nullopt);
+  return std::move(result.mesh);
+}
+
+int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
+  const InputKind kind = input_kind(command.input);
+  const OutputFormat format = output_format(command.output);  // before the work
+  std::error_code ec;
+  if (std::filesystem::equivalent(command.input, command.output, ec)) {
+    throw InputError(command.output + ": the output file is the input file");
+  }
+  const auto start = std::chrono::steady_clock::now();
+
+  QualitySummary quality;
+  ShapeMeshResult shape_result;
+  const ShapeMesh shape = kind == InputKind::boundary ? mesh_boundary_input(command, format, quality)
+                                                      : mesh_shape_input(command, format, quality, shape_result);
   switch (format) {
-    case OutputFormat::json: write_mesh_json_file(command.output, mesh); break;
-    case OutputFormat::vtu: write_vtu_file(command.output, mesh); break;
-    case OutputFormat::svg: {
-      SvgOptions svg;
-      svg.columns = 1;
-      svg.panel_size = 600;
-      // A curved patch is seen along its loop's mean normal (Newell's), when it has one.
-      const Vec3 newell = newell_normal(loop.points);
-      if (reference) svg.view_normal = reference;
-      else if (norm(newell) > 0) svg.view_normal = newell;
-      const std::string caption = std::to_string(mesh.quads.size()) + " quads: " + mesh.template_tree;
-      write_svg_file(command.output, {SvgPanel{&mesh, boundary_points, caption}}, svg);
-      break;
-    }
+    case OutputFormat::json: write_mesh_json_file(command.output, shape); break;
+    case OutputFormat::vtu: write_vtu_file(command.output, shape); break;
+    case OutputFormat::inp: write_inp_file(command.output, shape); break;
+    case OutputFormat::msh: write_msh_file(command.output, shape); break;
+    case OutputFormat::svg: break;  // written with the boundary mesh
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   if (quality.inverted > 0) {
-    err << "tquad: warning: " << quality.inverted << " of " << mesh.quads.size()
+    err << "tquad: warning: " << quality.inverted << " of " << shape.quads.size()
         << " quads are inverted (negative scaled Jacobian)\n";
   }
+  for (const RefusedFace& f : shape.refused_faces) {
+    err << "tquad: warning: refused " << one_line(f.reason) << "\n";
+  }
   if (command.report_json) {
-    out << mesh_report_json(mesh, quality).dump(2) << "\n";
+    nlohmann::ordered_json report = mesh_report_json(shape, quality);
+    if (kind == InputKind::shape) {
+      report["edge_size"] = shape_result.size;
+      nlohmann::ordered_json changes = nlohmann::ordered_json::array();
+      for (const IntervalChange& c : shape_result.changes) {
+        changes.push_back({{"edge", c.edge}, {"from", c.from}, {"to", c.to}});
+      }
+      report["changed_edges"] = changes;
+    }
+    // Reasons of refused faces may come from other libraries: never fail on bad UTF-8.
+    out << report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
   } else {
-    print_summary(out, command, mesh, quality, seconds);
+    print_summary(out, command, shape, quality, seconds, kind == InputKind::shape ? &shape_result : nullptr);
   }
   out.flush();
   return 0;

@@ -7,14 +7,19 @@
 #include <string>
 
 #include "core/mesher.h"
+#include "occ/shape_mesher.h"
 
 namespace tquad {
 
 struct MeshCommand {
-  std::string input;   // .json boundary (CAD extensions are refused for now)
-  std::string output;  // .json, .vtu or .svg
+  std::string input;   // .json boundary, or a CAD shape (.step .stp .iges .igs .brep)
+  std::string output;  // .json, .vtu, .inp, .msh, or (boundary input only) .svg
   bool report_json = false;  // print the JSON report instead of the human summary
   MeshOptions options;
+  // CAD input only (options.templates is ignored: `options` above is used).
+  ShapeMeshOptions shape;
+  std::string faces;                 // --faces "0,2,5-7"
+  std::vector<std::string> corners;  // --corners "FACE:V1,V2,..."
 };
 
 // Exit status: 0 done; 2 the input (or the command line) is wrong; 1 an internal

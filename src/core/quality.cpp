@@ -56,10 +56,15 @@ struct Accumulator {
 }  // namespace
 
 QualitySummary summarize_quality(const QuadMesh& mesh, const std::optional<Vec3>& reference) {
+  return summarize_quality(mesh.nodes, mesh.quads, reference);
+}
+
+QualitySummary summarize_quality(const std::vector<Vec3>& nodes, const std::vector<Quad>& quads,
+                                 const std::optional<Vec3>& reference) {
   Accumulator lee_lo, jacobian;
   QualitySummary summary;
-  for (const Quad& q : mesh.quads) {
-    const auto p = quad_points(mesh, q);
+  for (const Quad& q : quads) {
+    const std::array<Vec3, 4> p{nodes[q[0]], nodes[q[1]], nodes[q[2]], nodes[q[3]]};
     Vec3 normal;
     if (reference) {
       normal = *reference;

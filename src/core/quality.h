@@ -40,6 +40,8 @@ struct QualitySummary {
 // Normal used to sign the metrics: `reference` for every quad when given (a planar
 // region), otherwise each quad's own normal, the cross product of its diagonals.
 QualitySummary summarize_quality(const QuadMesh& mesh, const std::optional<Vec3>& reference);
+QualitySummary summarize_quality(const std::vector<Vec3>& nodes, const std::vector<Quad>& quads,
+                                 const std::optional<Vec3>& reference);
 
 std::array<Vec3, 4> quad_points(const QuadMesh& mesh, const Quad& q);
 

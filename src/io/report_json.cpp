@@ -1,5 +1,7 @@
 #include "io/report_json.h"
 
+#include <utility>
+
 namespace tquad {
 
 nlohmann::ordered_json quality_stats_json(const QualityStats& stats) {
@@ -11,7 +13,7 @@ nlohmann::ordered_json quality_stats_json(const QualityStats& stats) {
   return j;
 }
 
-nlohmann::ordered_json mesh_report_json(const QuadMesh& mesh, const QualitySummary& quality) {
+nlohmann::ordered_json mesh_report_json(const ShapeMesh& mesh, const QualitySummary& quality) {
   nlohmann::ordered_json report;
   report["nodes"] = mesh.nodes.size();
   report["quads"] = mesh.quads.size();
@@ -22,11 +24,22 @@ nlohmann::ordered_json mesh_report_json(const QuadMesh& mesh, const QualitySumma
   q["inverted"] = quality.inverted;
   q["degenerate"] = quality.degenerate;
   report["quality"] = q;
-  nlohmann::ordered_json face;
-  face["face"] = 0;
-  face["template_tree"] = mesh.template_tree;
-  report["faces"] = nlohmann::ordered_json::array({face});
-  report["refused_faces"] = nlohmann::ordered_json::array();
+  nlohmann::ordered_json faces = nlohmann::ordered_json::array();
+  for (const FaceMesh& f : mesh.faces) {
+    nlohmann::ordered_json face;
+    face["face"] = f.face;
+    face["template_tree"] = f.template_tree;
+    faces.push_back(std::move(face));
+  }
+  report["faces"] = std::move(faces);
+  nlohmann::ordered_json refused = nlohmann::ordered_json::array();
+  for (const RefusedFace& f : mesh.refused_faces) {
+    nlohmann::ordered_json face;
+    face["face"] = f.face;
+    face["reason"] = f.reason;
+    refused.push_back(std::move(face));
+  }
+  report["refused_faces"] = std::move(refused);
   return report;
 }
 

@@ -1,5 +1,6 @@
 #include "io/vtu_writer.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <cstring>
@@ -7,6 +8,7 @@
 #include <vector>
 
 #include "io/atomic_file_writer.h"
+#include "io/shape_mesh_check.h"
 
 namespace tquad {
 
@@ -29,7 +31,7 @@ struct ArrayBlock {
   std::uint64_t bytes;
 };
 
-void write_header(std::ostream& out, const QuadMesh& mesh) {
+void write_header(std::ostream& out, const ShapeMesh& mesh) {
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\""
       << (little_endian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt64\">\n"
@@ -63,7 +65,8 @@ void write_ascii_values(std::ostream& out, const T* values, std::size_t count, i
 
 }  // namespace
 
-void write_vtu(std::ostream& out, const QuadMesh& mesh, VtuEncoding encoding) {
+void write_vtu(std::ostream& out, const ShapeMesh& mesh, VtuEncoding encoding) {
+  check_shape_mesh(mesh);
   const std::size_t cells = mesh.quads.size();
   // Vec3 and Quad are plain arrays of double / int32 without padding, so their
   // storage is the VTK array layout itself.
@@ -72,7 +75,10 @@ void write_vtu(std::ostream& out, const QuadMesh& mesh, VtuEncoding encoding) {
   std::vector<std::int64_t> offsets(cells);
   for (std::size_t k = 0; k < cells; ++k) offsets[k] = 4 * static_cast<std::int64_t>(k + 1);
   const std::vector<std::uint8_t> types(cells, vtk_quad);
-  const std::vector<std::int32_t> face(cells, 0);
+  std::vector<std::int32_t> face(cells, 0);
+  for (const FaceMesh& f : mesh.faces) {
+    std::fill_n(face.begin() + f.first_quad, f.quad_count, static_cast<std::int32_t>(f.face));
+  }
 
   const ArrayBlock points{"Float64", "Points", 3, mesh.nodes.data(), mesh.nodes.size() * sizeof(Vec3)};
   const ArrayBlock connectivity{"Int32", "connectivity", 1, mesh.quads.data(), cells * sizeof(Quad)};
@@ -129,7 +135,7 @@ void write_vtu(std::ostream& out, const QuadMesh& mesh, VtuEncoding encoding) {
   out << "      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
 }
 
-void write_vtu_file(const std::string& path, const QuadMesh& mesh, VtuEncoding encoding) {
+void write_vtu_file(const std::string& path, const ShapeMesh& mesh, VtuEncoding encoding) {
   write_file_atomically(path, [&](std::ostream& out) { write_vtu(out, mesh, encoding); });
 }
 

@@ -1,12 +1,13 @@
-// write_vtu: VTK XML UnstructuredGrid (.vtu) of a quad mesh, readable by ParaView,
-// VisIt and meshio. Cells are VTK_QUAD (type 9); cell data "face" (Int32) is the face
-// each quad belongs to (0 for a single boundary region).
+// write_vtu: VTK XML UnstructuredGrid (.vtu) of a shape's quad mesh, readable by
+// ParaView, VisIt and meshio. Cells are VTK_QUAD (type 9) in quad order; cell data
+// "face" (Int32) is the face index of the record that owns each quad (0 for a single
+// boundary region).
 #pragma once
 
 #include <ostream>
 #include <string>
 
-#include "core/quad_mesh.h"
+#include "core/shape_mesh.h"
 
 namespace tquad {
 
@@ -15,10 +16,11 @@ enum class VtuEncoding {
   ascii,         // plain text, for reading by eye
 };
 
-void write_vtu(std::ostream& out, const QuadMesh& mesh, VtuEncoding encoding = VtuEncoding::appended_raw);
+// Throws std::invalid_argument for an inconsistent ShapeMesh (see shape_mesh_check.h).
+void write_vtu(std::ostream& out, const ShapeMesh& mesh, VtuEncoding encoding = VtuEncoding::appended_raw);
 
 // Writes PATH atomically (see atomic_file_writer.h).
-void write_vtu_file(const std::string& path, const QuadMesh& mesh,
+void write_vtu_file(const std::string& path, const ShapeMesh& mesh,
                     VtuEncoding encoding = VtuEncoding::appended_raw);
 
 }  // namespace tquad

@@ -60,7 +60,7 @@ bool runs_counter_clockwise(const FaceBoundary& b, const TopoDS_Face& face) {
 }
 
 FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::vector<EdgeNodes>& edges,
-                           const std::vector<Vec3>& /*nodes*/) {
+                           const std::vector<Vec3>& nodes) {
   const TopoDS_Face& face = index.face(face_index);
   const TopoDS_Wire outer = BRepTools::OuterWire(face);
   FaceBoundary b;
@@ -91,6 +91,10 @@ FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::v
       b.uv.push_back({p.X(), p.Y(), 0.0});
     }
     occurrences.push_back({occurrence, reversed ? en.params[n] : en.params[0], reversed ? en.params[0] : en.params[n]});
+  }
+  b.arc_length.assign(1, 0.0);
+  for (std::size_t i = 0; i < b.nodes.size(); ++i) {
+    b.arc_length.push_back(b.arc_length.back() + distance(nodes[b.nodes[i]], nodes[b.nodes[(i + 1) % b.nodes.size()]]));
   }
   // Turning angle at each edge start: from the previous occurrence's end tangent to
   // this one's start tangent, signed by the face normal there.

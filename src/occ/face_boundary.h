@@ -17,6 +17,7 @@ struct FaceBoundary {
   std::vector<int> edge_start;      // loop position where each wire edge begins
   std::vector<int> start_vertex;    // shape vertex index at each edge_start
   std::vector<double> turn;         // signed turning angle there (radians, > 0 convex)
+  std::vector<double> arc_length;   // 3D length along the loop to each node (size + 1)
   int inner_wires = 0;
   bool has_degenerate_edge = false;
 };

@@ -43,6 +43,16 @@ TopoDS_Shape read_with(Reader& reader, const std::string& path, const char* form
   return reader.OneShape();
 }
 
+// BRepTools::Read prints to stdout when the text is not a BREP shape; a BREP starts
+// with "DBRep_DrawableShape" or "CASCADE Topology V..." within its first lines.
+bool looks_like_brep(std::istream& in) {
+  std::string line;
+  for (int i = 0; i < 5 && std::getline(in, line); ++i) {
+    if (line.rfind("DBRep_DrawableShape", 0) == 0 || line.rfind("CASCADE Topology V", 0) == 0) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 bool is_shape_path(const std::string& path) {
@@ -61,6 +71,8 @@ TopoDS_Shape read_shape(const std::string& path) {
     IGESControl_Reader reader;
     shape = read_with(reader, path, "IGES");
   } else if (ext == "brep" || ext == "brp") {
+    std::ifstream header(path);
+    if (!looks_like_brep(header)) throw InputError("'" + path + "' is not a BREP file (no topology header)");
     BRep_Builder builder;
     if (!BRepTools::Read(shape, path.c_str(), builder)) {
       throw InputError("cannot read '" + path + "' as BREP");
@@ -73,6 +85,8 @@ TopoDS_Shape read_shape(const std::string& path) {
 }
 
 TopoDS_Shape read_brep_text(const std::string& brep) {
+  std::istringstream header(brep);
+  if (!looks_like_brep(header)) throw InputError("the text is not a BREP shape (no topology header)");
   std::istringstream in(brep);
   TopoDS_Shape shape;
   BRep_Builder builder;

@@ -35,13 +35,15 @@ void write_text(const fs::path& path, const std::string& text) {
   out << text;
 }
 
-RunResult run_tquad(const std::vector<std::string>& args) {
-  // Output files sit next to each other in a fresh folder per call.
+RunResult run_program(const std::string& program, const std::vector<std::string>& args,
+                      const std::string& working_dir) {
+  // stdout and stderr go to files in a fresh folder per call.
   char pattern[] = "/tmp/tquad_run_XXXXXX";
   const char* folder = mkdtemp(pattern);
   if (folder == nullptr) return {};
   const fs::path out = fs::path(folder) / "stdout", err = fs::path(folder) / "stderr";
-  std::string command = shell_quote(TQUAD_EXE);
+  std::string command = working_dir.empty() ? "" : "cd " + shell_quote(working_dir) + " && ";
+  command += shell_quote(program);
   for (const std::string& a : args) command += " " + shell_quote(a);
   command += " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string()) + " </dev/null";
   const int status = std::system(command.c_str());
@@ -52,6 +54,36 @@ RunResult run_tquad(const std::vector<std::string>& args) {
   std::error_code ignored;
   fs::remove_all(folder, ignored);
   return result;
+}
+
+RunResult run_tquad(const std::vector<std::string>& args) { return run_program(TQUAD_EXE, args); }
+
+bool program_on_path(const std::string& program) {
+  const std::string command = "command -v " + shell_quote(program) + " >/dev/null 2>&1";
+  return std::system(command.c_str()) == 0;
+}
+
+bool python_module_available(const std::string& module) {
+  if (!fs::exists(system_python)) return false;
+  return run_program(system_python, {"-c", "import " + module}).exit_status == 0;
+}
+
+ShapeMesh two_face_mesh() {
+  ShapeMesh mesh;
+  for (int j = 0; j <= 2; ++j) {
+    for (int i = 0; i <= 4; ++i) mesh.nodes.push_back({i / 3.0, static_cast<double>(j), 0.1});
+  }
+  for (int face = 0; face < 2; ++face) {
+    for (int j = 0; j < 2; ++j) {
+      for (int i = 2 * face; i < 2 * face + 2; ++i) {
+        const NodeId a = 5 * j + i;
+        mesh.quads.push_back({a, a + 1, a + 6, a + 5});
+      }
+    }
+  }
+  mesh.faces = {{3, "T0", 0, 4}, {7, "T1[T0,T0,T0,T0]", 4, 4}};
+  mesh.refused_faces = {{5, "the face has no corners"}};
+  return mesh;
 }
 
 std::string boundary_json(const std::vector<Vec3>& points, const std::vector<int>& corners) {

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/shape_mesh.h"
 #include "core/vec3.h"
 
 namespace tquad::cli_test {
@@ -19,6 +20,26 @@ struct RunResult {
 
 // Runs TQUAD_EXE with the arguments (each shell-quoted).
 RunResult run_tquad(const std::vector<std::string>& args);
+
+// Runs any program with the arguments (each shell-quoted), in `working_dir` when not
+// empty. `program` is found on PATH unless it has a '/'.
+RunResult run_program(const std::string& program, const std::vector<std::string>& args,
+                      const std::string& working_dir = "");
+
+// Whether `program` is an executable on PATH (e.g. "ccx").
+bool program_on_path(const std::string& program);
+
+// Debian's python, which has the python3-* packages (PLATFORM.md: not the pyenv one).
+inline constexpr const char* system_python = "/usr/bin/python3";
+
+// Whether system_python exists and can import `module`.
+bool python_module_available(const std::string& module);
+
+// Two faces side by side that share the nodes of their common edge: a 2 x 2 grid of
+// quads each, on x in [0, 2/3] (face 3) and [2/3, 4/3] (face 7), y in [0, 2], z = 0.1,
+// with node k = 5 j + i at (i / 3, j, 0.1); plus refused face 5. 15 nodes, 8 quads
+// (quads 0-3 face 3, quads 4-7 face 7), counter-clockwise seen from +z.
+ShapeMesh two_face_mesh();
 
 std::string read_text(const std::filesystem::path& path);
 void write_text(const std::filesystem::path& path, const std::string& text);

@@ -170,18 +170,30 @@ TEST_F(BadInput, UnknownOutputExtension) {
   expect_refused(file, {}, {"out.xyz", "unknown output format"}, "out.xyz");
 }
 
-TEST_F(BadInput, OutputFormatNotYetSupported) {
+TEST_F(BadInput, UnknownOutputExtensionListsTheFormats) {
   std::vector<int> corners;
   const std::string file = boundary_file("ok.json", square({4, 4, 4, 4}, corners), corners);
-  expect_refused(file, {}, {"out.inp", "not yet supported"}, "out.inp");
+  expect_refused(file, {}, {"out.stl", "unknown output format", ".json", ".vtu", ".inp", ".msh", ".svg"},
+                 "out.stl");
 }
 
-TEST_F(BadInput, CadInputNotYetSupported) {
+TEST_F(BadInput, InpAndMshOutputsAreWrittenOnlyForAGoodInput) {
+  std::vector<int> corners;
+  const std::string file = boundary_file("odd.json", square({4, 4, 4, 3}, corners), corners);
+  expect_refused(file, {}, {file, "odd"}, "out.inp");
+  expect_refused(file, {}, {file, "odd"}, "out.msh");
+}
+
+TEST_F(BadInput, UnreadableCadFile) {
   for (const std::string ext : {".step", ".stp", ".brep", ".iges", ".igs", ".STEP"}) {
     const std::string file = path("shape" + ext);
     write_text(file, "not a real shape");
-    expect_refused(file, {}, {file, "CAD input", "not yet supported"});
+    expect_refused(file, {}, {file});
   }
+}
+
+TEST_F(BadInput, MissingCadFile) {
+  expect_refused(path("absent.step"), {}, {"absent.step", "cannot open"});
 }
 
 TEST_F(BadInput, UnknownInputExtension) {

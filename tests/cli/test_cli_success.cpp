@@ -254,7 +254,7 @@ TEST(CommandLineHelp, DocumentsEveryOption) {
   const RunResult mesh = run_tquad({"mesh", "--help"});
   EXPECT_EQ(mesh.exit_status, 0) << mesh.err;
   for (const char* option : {"input", "--output", "--report", "--t4-ratio", "--t5-cut-edges", "--max-quads", ".vtu",
-                             ".svg", "CAD"}) {
+                             ".inp", ".msh", ".svg", "CAD"}) {
     EXPECT_NE(mesh.out.find(option), std::string::npos) << option << " not in: " << mesh.out;
   }
   const RunResult version = run_tquad({"--version"});

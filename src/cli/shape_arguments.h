@@ -1,0 +1,16 @@
+// Parsing of the CAD options of `tquad mesh`: --faces LIST and --corners FACE:V1,V2,...
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace tquad {
+
+// "0,2,5-7" -> {0, 2, 5, 6, 7}. Throws InputError naming the bad item.
+std::vector<int> parse_face_list(const std::string& text);
+
+// Each "FACE:V1,V2[,V3[,V4]]" -> corners[FACE] = {V1, V2, ...}. Throws InputError.
+std::map<int, std::vector<int>> parse_corner_specs(const std::vector<std::string>& specs);
+
+}  // namespace tquad

@@ -1,0 +1,54 @@
+#include "io/shape_mesh_check.h"
+
+#include <stdexcept>
+#include <string>
+#include <unordered_set>
+
+namespace tquad {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& what) { throw std::invalid_argument("invalid ShapeMesh: " + what); }
+
+}  // namespace
+
+void check_shape_mesh(const ShapeMesh& mesh) {
+  const auto node_count = static_cast<std::int64_t>(mesh.nodes.size());
+  for (std::size_t k = 0; k < mesh.quads.size(); ++k) {
+    for (int i = 0; i < 4; ++i) {
+      const NodeId id = mesh.quads[k][i];
+      if (id < 0 || id >= node_count) {
+        fail("quads[" + std::to_string(k) + "][" + std::to_string(i) + "] = " + std::to_string(id) +
+             " is not a node index (" + std::to_string(node_count) + " nodes)");
+      }
+    }
+  }
+  std::unordered_set<int> meshed;
+  std::int64_t next = 0;
+  for (std::size_t r = 0; r < mesh.faces.size(); ++r) {
+    const FaceMesh& f = mesh.faces[r];
+    const std::string name = "faces[" + std::to_string(r) + "] (face " + std::to_string(f.face) + ")";
+    if (f.face < 0) fail(name + " has a negative face index");
+    if (!meshed.insert(f.face).second) fail(name + ": face " + std::to_string(f.face) + " has two records");
+    if (f.first_quad != next || f.quad_count < 0) {
+      fail(name + " owns quads [" + std::to_string(f.first_quad) + ", +" + std::to_string(f.quad_count) +
+           ") but the next unowned quad is " + std::to_string(next));
+    }
+    next += f.quad_count;
+    if (next > static_cast<std::int64_t>(mesh.quads.size())) {
+      fail(name + " owns quads up to " + std::to_string(next) + " of " + std::to_string(mesh.quads.size()));
+    }
+  }
+  if (next != static_cast<std::int64_t>(mesh.quads.size())) {
+    fail("the face records own " + std::to_string(next) + " of " + std::to_string(mesh.quads.size()) + " quads");
+  }
+  for (std::size_t r = 0; r < mesh.refused_faces.size(); ++r) {
+    const int face = mesh.refused_faces[r].face;
+    if (face < 0 || meshed.count(face) != 0) {
+      fail("refused_faces[" + std::to_string(r) + "]: face " + std::to_string(face) +
+           (face < 0 ? " is negative" : " is also meshed"));
+    }
+  }
+}
+
+}  // namespace tquad

@@ -1,0 +1,25 @@
+#include "io/text_output.h"
+
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+namespace tquad {
+
+void append_double(std::string& text, double value) {
+  if (!std::isfinite(value)) throw std::logic_error("mesh has a non-finite node coordinate");
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  text.append(buffer, result.ptr);
+}
+
+void flush_if_large(std::ostream& out, std::string& text) {
+  if (text.size() > (1u << 20)) flush_text(out, text);
+}
+
+void flush_text(std::ostream& out, std::string& text) {
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  text.clear();
+}
+
+}  // namespace tquad
