@@ -6,6 +6,7 @@
 #include <BRep_Tool.hxx>
 
 #include <algorithm>
+#include <chrono>
 #include <optional>
 
 #include "core/input_error.h"
@@ -17,6 +18,10 @@ namespace tquad {
 namespace {
 
 Vec3 to_vec3(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 // The quads of a template mesh in the face's local numbering, reversed when the loop
 // runs clockwise around the outer normal.
@@ -62,15 +67,19 @@ std::vector<Vec3> local_positions(const FaceBoundary& b, const std::vector<Vec3>
 FaceMeshResult mesh_in_parameter_space(const TopoDS_Face& face, const FaceBoundary& b,
                                        const std::vector<int>& corners, const std::vector<Vec3>& nodes,
                                        const MeshOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
   const QuadMesh uv_mesh = mesh_boundary(BoundaryLoop{b.uv, corners}, options);
   FaceMeshResult out;
   take_quads(uv_mesh, !runs_counter_clockwise(b, face), out);
+  out.template_seconds = seconds_since(start);
+  const auto placing = std::chrono::steady_clock::now();
   const BRepAdaptor_Surface surface(face);
   const std::size_t n = b.nodes.size();
   out.interior.reserve(uv_mesh.nodes.size() - n);
   for (std::size_t i = n; i < uv_mesh.nodes.size(); ++i) {
     out.interior.push_back(to_vec3(surface.Value(uv_mesh.nodes[i].x, uv_mesh.nodes[i].y)));
   }
+  out.placement_seconds = seconds_since(placing);
   out.inverted = inverted_on_surface(face, out.quads, uv_mesh.nodes, local_positions(b, nodes, out.interior));
   return out;
 }
@@ -87,9 +96,12 @@ FaceMeshResult mesh_in_space(const TopoDS_Face& face, const FaceBoundary& b, con
   }
   std::vector<Vec3> loop;
   for (NodeId id : b.nodes) loop.push_back(nodes[id]);
+  const auto start = std::chrono::steady_clock::now();
   const QuadMesh mesh = mesh_boundary(BoundaryLoop{loop, corners}, options);
   FaceMeshResult out;
   out.used_projection = true;
+  out.template_seconds = seconds_since(start);
+  const auto placing = std::chrono::steady_clock::now();
   // The 3D loop's own orientation: compare with the outer normal at the first node.
   const Vec3 loop_normal = newell_normal(loop);
   const BRepAdaptor_Surface surface(face);
@@ -117,6 +129,7 @@ FaceMeshResult mesh_in_space(const TopoDS_Face& face, const FaceBoundary& b, con
     uv.push_back({previous.X(), previous.Y(), 0.0});
     out.interior.push_back(to_vec3(geom->Value(previous.X(), previous.Y()).Transformed(to_global)));
   }
+  out.placement_seconds = seconds_since(placing);
   out.inverted = inverted_on_surface(face, out.quads, uv, local_positions(b, nodes, out.interior));
   return out;
 }

@@ -150,6 +150,8 @@ ShapeMeshResult mesh_shape(const TopoDS_Shape& shape, const ShapeMeshOptions& op
     mesh.faces.push_back({f, o.mesh.template_tree, first, static_cast<std::int64_t>(o.mesh.quads.size())});
     result.projected_faces += o.mesh.used_projection ? 1 : 0;
     result.inverted += o.mesh.inverted;
+    result.template_seconds += o.mesh.template_seconds;
+    result.placement_seconds += o.mesh.placement_seconds;
   }
   drop_unused_nodes(mesh);
   return result;
