@@ -10,7 +10,10 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Wire.hxx>
 
+#include <algorithm>
 #include <cmath>
+
+#include "core/input_error.h"
 #include <stdexcept>
 
 namespace tquad {
@@ -55,6 +58,68 @@ double signed_uv_area(const std::vector<Vec3>& uv) {
   return 0.5 * twice;
 }
 
+bool is_disk_around_pole(const FaceBoundary& b) {
+  return b.has_degenerate_edge && std::find(b.is_seam.begin(), b.is_seam.end(), 1) != b.is_seam.end();
+}
+
+Vec3 polar_to_uv(const PolarMap& m, const Vec3& xy) {
+  const double r = std::hypot(xy.x, xy.y);
+  double theta = std::atan2(-m.side * xy.y, xy.x);
+  if (theta < 0) theta += 2 * M_PI;
+  return {m.u_ref + theta * m.period / (2 * M_PI), m.pole_v + m.side * r * m.radius, 0.0};
+}
+
+FaceBoundary around_pole(const FaceBoundary& b, const TopoDS_Face& face, int face_index,
+                         const std::vector<Vec3>& nodes) {
+  const BRepAdaptor_Surface surface(face);
+  if (!surface.IsUPeriodic()) {
+    throw InputError("face " + std::to_string(face_index) +
+                     " has a seam and a pole but is not periodic in u; not supported yet");
+  }
+  FaceBoundary out;
+  out.has_degenerate_edge = true;
+  out.inner_wires = b.inner_wires;
+  const int edges = static_cast<int>(b.edge_start.size());
+  std::vector<Vec3> uv;
+  for (int k = 0; k < edges; ++k) {
+    if (b.is_seam[k]) continue;
+    const int first = b.edge_start[k];
+    const int last = k + 1 < edges ? b.edge_start[k + 1] : static_cast<int>(b.nodes.size());
+    out.edge_start.push_back(static_cast<int>(out.nodes.size()));
+    out.start_vertex.push_back(b.start_vertex[k]);
+    out.is_seam.push_back(0);
+    out.turn.push_back(b.turn[k]);
+    for (int i = first; i < last; ++i) {
+      out.nodes.push_back(b.nodes[i]);
+      uv.push_back(b.uv[i]);
+    }
+  }
+  if (out.nodes.size() < 2) {
+    throw InputError("face " + std::to_string(face_index) + " has no edge besides its seam and pole");
+  }
+  PolarMap m;
+  m.period = surface.UPeriod();
+  m.pole_v = b.pole_v;
+  m.u_ref = uv[0].x;
+  for (const Vec3& p : uv) m.u_ref = std::min(m.u_ref, p.x);
+  m.side = uv[0].y > m.pole_v ? 1.0 : -1.0;
+  m.radius = 0;
+  for (const Vec3& p : uv) m.radius = std::max(m.radius, std::abs(p.y - m.pole_v));
+  for (const Vec3& p : uv) {
+    const double theta = 2 * M_PI * (p.x - m.u_ref) / m.period;
+    const double r = std::abs(p.y - m.pole_v) / m.radius;
+    out.uv.push_back({r * std::cos(theta), -m.side * r * std::sin(theta), 0.0});
+  }
+  out.polar = m;
+  // 3D lengths along the kept loop, for the corner choice.
+  out.arc_length.assign(1, 0.0);
+  for (std::size_t i = 0; i < out.nodes.size(); ++i) {
+    const NodeId next = out.nodes[(i + 1) % out.nodes.size()];
+    out.arc_length.push_back(out.arc_length.back() + distance(nodes[out.nodes[i]], nodes[next]));
+  }
+  return out;
+}
+
 bool runs_counter_clockwise(const FaceBoundary& b, const TopoDS_Face& face) {
   return (signed_uv_area(b.uv) > 0) == (face.Orientation() != TopAbs_REVERSED);
 }
@@ -76,14 +141,19 @@ FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::v
     const TopoDS_Edge& occurrence = it.Current();
     const int e = index.edge_index(occurrence);
     const EdgeNodes& en = edges[e];
-    if (en.degenerate) { b.has_degenerate_edge = true; continue; }
     double f = 0, l = 0;
     const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(occurrence, face, f, l);
     if (pcurve.IsNull()) throw std::runtime_error("edge " + std::to_string(e) + " has no pcurve on face " + std::to_string(face_index));
+    if (en.degenerate) {
+      if (!b.has_degenerate_edge) b.pole_v = pcurve->Value(0.5 * (f + l)).Y();
+      b.has_degenerate_edge = true;
+      continue;
+    }
     const bool reversed = occurrence.Orientation() == TopAbs_REVERSED;
     const int n = static_cast<int>(en.nodes.size()) - 1;
     b.edge_start.push_back(static_cast<int>(b.nodes.size()));
     b.start_vertex.push_back(en.nodes[reversed ? n : 0]);
+    b.is_seam.push_back(BRep_Tool::IsClosed(occurrence, face));
     for (int k = 0; k < n; ++k) {  // the last node is the next edge's first
       const int i = reversed ? n - k : k;
       b.nodes.push_back(en.nodes[i]);

@@ -3,6 +3,7 @@
 // 3D curve's parameter) and the wire's vertices with their turning angles.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,15 +12,26 @@
 
 namespace tquad {
 
+// Polar coordinates around a pole of a face periodic in u: theta = 2 pi (u - u_ref) /
+// period, r = |v - pole_v| / radius, and (x, y) = (r cos theta, -side r sin theta),
+// side = +1 when the face lies at v > pole_v. The sign keeps the (u, v) orientation:
+// (u, v) -> (theta, r) has Jacobian sign `side`, (theta, r) -> (r cos, r sin) sign -1.
+struct PolarMap {
+  double u_ref = 0, period = 1, pole_v = 0, radius = 1, side = 1;
+};
+
 struct FaceBoundary {
   std::vector<NodeId> nodes;   // around the outer wire; the loop closes on itself
   std::vector<Vec3> uv;        // (u, v, 0) of each loop node
   std::vector<int> edge_start;      // loop position where each wire edge begins
   std::vector<int> start_vertex;    // shape vertex index at each edge_start
+  std::vector<char> is_seam;        // the wire edge is the face's seam (met twice)
   std::vector<double> turn;         // signed turning angle there (radians, > 0 convex)
   std::vector<double> arc_length;   // 3D length along the loop to each node (size + 1)
   int inner_wires = 0;
   bool has_degenerate_edge = false;
+  double pole_v = 0;                // v of the (first) degenerate edge, if any
+  std::optional<PolarMap> polar;    // set by around_pole: uv then holds polar (x, y)
 };
 
 // Signed area of a (u, v) loop (positive: counter-clockwise).
@@ -27,6 +39,19 @@ double signed_uv_area(const std::vector<Vec3>& uv);
 
 // Whether the loop runs counter-clockwise around the face's outer normal.
 bool runs_counter_clockwise(const FaceBoundary& boundary, const TopoDS_Face& face);
+
+// A face with a seam and a pole (a cone's side, a sphere cap) is a disk seen from the
+// pole: the seam is only a cut of its parametrization.
+bool is_disk_around_pole(const FaceBoundary& boundary);
+
+// The loop without its seam edges, in polar (x, y) around the pole: a planar disk the
+// templates mesh directly; the pole itself becomes an ordinary interior point. Throws
+// InputError when the face is not periodic in u.
+FaceBoundary around_pole(const FaceBoundary& boundary, const TopoDS_Face& face, int face_index,
+                         const std::vector<Vec3>& nodes);
+
+// (u, v) of a polar (x, y).
+Vec3 polar_to_uv(const PolarMap& map, const Vec3& xy);
 
 // Throws std::runtime_error when a pcurve is missing.
 FaceBoundary face_boundary(const ShapeIndex& index, int face, const std::vector<EdgeNodes>& edges,

@@ -33,13 +33,18 @@ void take_quads(const QuadMesh& mesh, bool reverse, FaceMeshResult& out) {
 
 // Quads with a corner inverted against the face's outer normal at the quad's centre,
 // in space: uv[i] and xyz[i] are local node i's parameters and position.
+// `param` holds the mesh's own coordinates: (u, v), or polar (x, y) around a pole,
+// where a quad's centre is taken before going back to (u, v) (a quad across the seam
+// has corners at u near 0 and near the period).
 long long inverted_on_surface(const TopoDS_Face& face, const std::vector<Quad>& quads,
-                              const std::vector<Vec3>& uv, const std::vector<Vec3>& xyz) {
+                              const std::vector<Vec3>& param, const std::optional<PolarMap>& polar,
+                              const std::vector<Vec3>& xyz) {
   const BRepAdaptor_Surface surface(face);
   long long inverted = 0;
   for (const Quad& q : quads) {
     Vec3 centre;
-    for (NodeId n : q) centre += 0.25 * uv[n];
+    for (NodeId n : q) centre += 0.25 * param[n];
+    if (polar) centre = polar_to_uv(*polar, centre);
     gp_Pnt p;
     gp_Vec du, dv;
     surface.D1(centre.x, centre.y, p, du, dv);
@@ -76,11 +81,13 @@ FaceMeshResult mesh_in_parameter_space(const TopoDS_Face& face, const FaceBounda
   const BRepAdaptor_Surface surface(face);
   const std::size_t n = b.nodes.size();
   out.interior.reserve(uv_mesh.nodes.size() - n);
+  // Around a pole the mesh was built in polar (x, y): back to (u, v) first.
   for (std::size_t i = n; i < uv_mesh.nodes.size(); ++i) {
-    out.interior.push_back(to_vec3(surface.Value(uv_mesh.nodes[i].x, uv_mesh.nodes[i].y)));
+    const Vec3 uv = b.polar ? polar_to_uv(*b.polar, uv_mesh.nodes[i]) : uv_mesh.nodes[i];
+    out.interior.push_back(to_vec3(surface.Value(uv.x, uv.y)));
   }
   out.placement_seconds = seconds_since(placing);
-  out.inverted = inverted_on_surface(face, out.quads, uv_mesh.nodes, local_positions(b, nodes, out.interior));
+  out.inverted = inverted_on_surface(face, out.quads, uv_mesh.nodes, b.polar, local_positions(b, nodes, out.interior));
   return out;
 }
 
@@ -130,7 +137,7 @@ FaceMeshResult mesh_in_space(const TopoDS_Face& face, const FaceBoundary& b, con
     out.interior.push_back(to_vec3(geom->Value(previous.X(), previous.Y()).Transformed(to_global)));
   }
   out.placement_seconds = seconds_since(placing);
-  out.inverted = inverted_on_surface(face, out.quads, uv, local_positions(b, nodes, out.interior));
+  out.inverted = inverted_on_surface(face, out.quads, uv, std::nullopt, local_positions(b, nodes, out.interior));
   return out;
 }
 
@@ -166,7 +173,7 @@ FaceMeshResult mesh_face(const ShapeIndex& index, int face_index, const FaceBoun
   // to the other when that one does better.
   std::string uv_problem = "a degenerate edge (pole) collapses quads in (u, v)";
   std::optional<FaceMeshResult> best;
-  if (!boundary.has_degenerate_edge) {
+  if (!boundary.has_degenerate_edge || boundary.polar) {
     try {
       best = mesh_in_parameter_space(face, boundary, corners, nodes, options);
     } catch (const InputError& e) {

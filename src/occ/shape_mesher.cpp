@@ -53,6 +53,9 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
   FaceOutcome outcome;
   try {
     outcome.boundary = face_boundary(index, f, edges, nodes);
+    if (is_disk_around_pole(outcome.boundary)) {
+      outcome.boundary = around_pole(outcome.boundary, index.face(f), f, nodes);
+    }
     const auto requested = options.corners.find(f);
     const std::vector<int> corners = choose_face_corners(
         outcome.boundary, f, requested == options.corners.end() ? std::vector<int>{} : requested->second);
