@@ -34,6 +34,9 @@ const std::vector<Table1Row> kRows = {
     {"9(h)", {10, 10, 6}, "T3[T0,T0,T0]"},
 };
 
+// Test names and failures show the figure, not the row's bytes.
+void PrintTo(const Table1Row& row, std::ostream* os) { *os << row.figure; }
+
 BoundaryLoop row_boundary(const Table1Row& row) {
   const auto& n = row.counts;
   return n.size() == 4 ? testing::square_boundary(n[0], n[1], n[2], n[3])
