@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepTools.hxx>
 #include <BRepBndLib.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
@@ -144,6 +147,29 @@ void check_folder(const fs::path& dir) {
                 fs::path(path).filename().c_str(), r.faces, r.meshed, r.refused, r.quads,
                 r.closed ? "closed" : "open");
   }
+}
+
+// Primitives with poles, written to a temporary BREP and checked like the others.
+FileReport check_primitive(const TopoDS_Shape& shape, const std::string& name) {
+  const std::string path = (fs::temp_directory_path() / (name + ".brep")).string();
+  BRepTools::Write(shape, path.c_str());
+  const FileReport r = check_file(path);
+  fs::remove(path);
+  return r;
+}
+
+TEST(ShapeMeshing, PolesAndSeams) {
+  // A hemisphere: a cap with a pole and a seam, closed by a disk.
+  FileReport r = check_primitive(BRepPrimAPI_MakeSphere(10.0, 0.0, M_PI / 2).Shape(), "hemisphere");
+  EXPECT_EQ(r.refused, 0);
+  EXPECT_TRUE(r.closed);
+  // A pointed cone: its side has the apex (a degenerate edge) and a seam.
+  r = check_primitive(BRepPrimAPI_MakeCone(10.0, 0.0, 20.0).Shape(), "cone");
+  EXPECT_EQ(r.refused, 0);
+  EXPECT_TRUE(r.closed);
+  // A whole sphere has no edge but its seam and two poles: refused, with a reason.
+  r = check_primitive(BRepPrimAPI_MakeSphere(10.0).Shape(), "sphere");
+  EXPECT_EQ(r.refused, 1);
 }
 
 TEST(ShapeMeshing, ExampleShapes) { check_folder(fs::path(TQUAD_SOURCE_DIR) / "resources" / "shapes"); }
