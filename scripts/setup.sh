@@ -18,6 +18,8 @@ packages=(
   # occ: OpenCASCADE 7.6 (Debian's CMake targets link libtbb, hence libtbb-dev)
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libtbb-dev
+  # python: the tquad module for Debian's python3 (FreeCAD's)
+  pybind11-dev python3-dev python3-numpy
   # tests: real readers and the solver of the files written (meshio, Gmsh, CalculiX);
   # Gmsh is also the peer of bench/compare_gmsh.py
   python3-meshio gmsh python3-gmsh calculix-ccx

@@ -1,0 +1,164 @@
+// tquad._core: the pybind11 binding of the mesher. The Python package `tquad`
+// (tquad/__init__.py) is the public face; this module is private to it.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "core/input_error.h"
+#include "core/mesher.h"
+#include "core/planar_self_intersection.h"
+#include "core/quality.h"
+#include "core/shape_mesh.h"
+#include "occ/shape_mesher.h"
+#include "occ/shape_reader.h"
+
+namespace py = pybind11;
+
+namespace tquad {
+namespace {
+
+py::dict stats_dict(const QualityStats& s) {
+  py::dict d;
+  d["min"] = s.min;
+  d["avg"] = s.avg;
+  d["max"] = s.max;
+  d["std"] = s.std;
+  return d;
+}
+
+py::dict quality_dict(const QualitySummary& q) {
+  py::dict d;
+  d["lee_lo"] = stats_dict(q.lee_lo);
+  d["scaled_jacobian"] = stats_dict(q.scaled_jacobian);
+  d["inverted"] = q.inverted;
+  d["degenerate"] = q.degenerate;
+  return d;
+}
+
+// The mesh as plain Python data: numpy arrays for nodes and quads (copied once).
+py::dict mesh_dict(const ShapeMesh& mesh, const QualitySummary& quality) {
+  py::array_t<double> nodes({static_cast<py::ssize_t>(mesh.nodes.size()), py::ssize_t{3}});
+  auto n = nodes.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < n.shape(0); ++i) {
+    n(i, 0) = mesh.nodes[i].x;
+    n(i, 1) = mesh.nodes[i].y;
+    n(i, 2) = mesh.nodes[i].z;
+  }
+  py::array_t<std::int32_t> quads({static_cast<py::ssize_t>(mesh.quads.size()), py::ssize_t{4}});
+  auto q = quads.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < q.shape(0); ++i) {
+    for (int k = 0; k < 4; ++k) q(i, k) = mesh.quads[i][k];
+  }
+  py::list faces, refused;
+  for (const FaceMesh& f : mesh.faces) {
+    py::dict d;
+    d["face"] = f.face;
+    d["template_tree"] = f.template_tree;
+    d["first_quad"] = f.first_quad;
+    d["quad_count"] = f.quad_count;
+    faces.append(d);
+  }
+  for (const RefusedFace& f : mesh.refused_faces) {
+    py::dict d;
+    d["face"] = f.face;
+    d["reason"] = f.reason;
+    refused.append(d);
+  }
+  py::dict out;
+  out["nodes"] = nodes;
+  out["quads"] = quads;
+  out["faces"] = faces;
+  out["refused_faces"] = refused;
+  out["quality"] = quality_dict(quality);
+  return out;
+}
+
+MeshOptions template_options(int t4_ratio, int t5_cut_edges, long long max_quads) {
+  MeshOptions options;
+  options.t4_ratio = t4_ratio;
+  options.t5_cut_edges = t5_cut_edges;
+  options.max_quads = max_quads;
+  return options;
+}
+
+py::dict mesh_boundary_binding(const py::array_t<double, py::array::c_style | py::array::forcecast>& points,
+                               const std::vector<int>& corners, int t4_ratio, int t5_cut_edges,
+                               long long max_quads) {
+  if (points.ndim() != 2 || (points.shape(1) != 2 && points.shape(1) != 3)) {
+    throw InputError("points must be an N x 3 (or N x 2) array of coordinates");
+  }
+  BoundaryLoop loop;
+  auto p = points.unchecked<2>();
+  for (py::ssize_t i = 0; i < p.shape(0); ++i) {
+    loop.points.push_back({p(i, 0), p(i, 1), p.shape(1) == 3 ? p(i, 2) : 0.0});
+  }
+  loop.corners = corners;
+  QuadMesh mesh;
+  QualitySummary quality;
+  {
+    py::gil_scoped_release release;
+    mesh = mesh_boundary(loop, template_options(t4_ratio, t5_cut_edges, max_quads));
+    Vec3 normal;
+    const bool planar = planar_normal(loop.points, normal);
+    quality = summarize_quality(mesh, planar ? std::optional<Vec3>(normal) : std::nullopt);
+  }
+  py::dict out = mesh_dict(single_face_mesh(std::move(mesh)), quality);
+  return out;
+}
+
+bool looks_like_brep_text(const std::string& s) {
+  return s.find("CASCADE Topology") != std::string::npos || s.rfind("DBRep_DrawableShape", 0) == 0;
+}
+
+py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, const std::vector<int>& faces,
+                            const std::map<int, std::vector<int>>& corners, bool keep_going,
+                            bool allow_inverted, int threads, int t4_ratio, int t5_cut_edges,
+                            long long max_quads) {
+  ShapeMeshOptions options;
+  options.size = size;
+  options.faces = faces;
+  options.corners = corners;
+  options.keep_going = keep_going;
+  options.allow_inverted = allow_inverted;
+  options.threads = threads;
+  options.templates = template_options(t4_ratio, t5_cut_edges, max_quads);
+  if (size < 0) throw InputError("size must be positive (or 0 for the default)");
+  ShapeMeshResult result;
+  QualitySummary quality;
+  {
+    py::gil_scoped_release release;
+    const TopoDS_Shape shape = looks_like_brep_text(brep_text_or_path) ? read_brep_text(brep_text_or_path)
+                                                                        : read_shape(brep_text_or_path);
+    result = mesh_shape(shape, options);
+    quality = summarize_quality(result.mesh.nodes, result.mesh.quads, std::nullopt);
+  }
+  py::dict out = mesh_dict(result.mesh, quality);
+  out["edge_size"] = result.size;
+  py::list changes;
+  for (const IntervalChange& c : result.changes) {
+    py::dict d;
+    d["edge"] = c.edge;
+    d["from"] = c.from;
+    d["to"] = c.to;
+    changes.append(d);
+  }
+  out["changed_edges"] = changes;
+  return out;
+}
+
+}  // namespace
+}  // namespace tquad
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "Private binding of the TemplateQuad mesher; use the `tquad` package.";
+  // Wrong input is the caller's to fix: ValueError with the engine's message.
+  py::register_exception<tquad::InputError>(m, "InputError", PyExc_ValueError);
+  m.def("mesh_boundary", &tquad::mesh_boundary_binding, py::arg("points"), py::arg("corners"),
+        py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"));
+  m.def("mesh_shape", &tquad::mesh_shape_binding, py::arg("brep_text_or_path"), py::arg("size"),
+        py::arg("faces"), py::arg("corners"), py::arg("keep_going"), py::arg("allow_inverted"),
+        py::arg("threads"), py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"));
+}

@@ -1,0 +1,124 @@
+"""TemplateQuad: all-quadrilateral meshes by hierarchical templates.
+
+    >>> import tquad
+    >>> m = tquad.mesh_boundary(points, corners=[0, 10, 20, 30])
+    >>> m.nodes.shape, m.quads.shape, m.template_trees
+    >>> s = tquad.mesh_shape("part.step", size=2.0, keep_going=True)
+
+Wrong input raises ValueError with the message the command line would print; the
+message names the face, edge, vertex, point or curve at fault.
+"""
+from typing import Dict, Iterable, List, Mapping, Optional, Sequence, Union
+
+import numpy as np
+
+from . import _core
+
+__all__ = ["Mesh", "mesh_boundary", "mesh_shape"]
+
+_MAX_QUADS = 100_000_000
+
+
+class Mesh:
+    """A quad mesh of one boundary region (face 0) or of the faces of a shape.
+
+    Attributes:
+        nodes: float64 array, N x 3, node positions. For a boundary input the
+            boundary points come first, bit-exact.
+        quads: int32 array, M x 4, 0-based node indices, counter-clockwise seen from
+            the face's outer normal (for a boundary, in the loop's orientation).
+        faces: one dict per meshed face: ``face`` (index in the shape),
+            ``template_tree`` (e.g. ``"T2[T0,T0,T1[T0,T0,T0,T0]]"``), ``first_quad``
+            and ``quad_count`` (the face's quads are a contiguous range).
+        refused_faces: one dict per face not meshed: ``face`` and ``reason``.
+        quality: ``lee_lo`` and ``scaled_jacobian`` (each ``min``, ``avg``,
+            ``max``, ``std``), and the ``inverted`` and ``degenerate`` quad counts.
+        edge_size: for a shape, the target edge length used.
+        changed_edges: for a shape, the edges whose counts changed by one so that
+            every face's total is even: dicts ``edge``, ``from``, ``to``.
+    """
+
+    def __init__(self, data: dict):
+        self.nodes: np.ndarray = data["nodes"]
+        self.quads: np.ndarray = data["quads"]
+        self.faces: List[dict] = data["faces"]
+        self.refused_faces: List[dict] = data["refused_faces"]
+        self.quality: dict = data["quality"]
+        self.edge_size: Optional[float] = data.get("edge_size")
+        self.changed_edges: List[dict] = data.get("changed_edges", [])
+
+    @property
+    def template_trees(self) -> List[str]:
+        """The template tree of each meshed face, in face order."""
+        return [f["template_tree"] for f in self.faces]
+
+    @property
+    def template_tree(self) -> str:
+        """The template tree of a one-face mesh (a boundary input)."""
+        if len(self.faces) != 1:
+            raise ValueError(f"the mesh has {len(self.faces)} faces; use template_trees")
+        return self.faces[0]["template_tree"]
+
+    def face_quads(self, face: int) -> np.ndarray:
+        """The quads of one face of the shape (by its index in the shape)."""
+        for f in self.faces:
+            if f["face"] == face:
+                return self.quads[f["first_quad"]:f["first_quad"] + f["quad_count"]]
+        raise ValueError(f"face {face} is not in the mesh")
+
+    def __repr__(self) -> str:
+        return (f"Mesh({len(self.nodes)} nodes, {len(self.quads)} quads, "
+                f"{len(self.faces)} faces, {len(self.refused_faces)} refused)")
+
+
+def mesh_boundary(points, corners: Sequence[int], *, t4_ratio: int = 2,
+                  t5_cut_edges: int = 0, max_quads: int = _MAX_QUADS) -> Mesh:
+    """Mesh the region inside a closed boundary loop.
+
+    Args:
+        points: N x 3 (or N x 2) coordinates in order around the region; the loop
+            closes itself (do not repeat the first point). N must be even.
+        corners: 2, 3 or 4 indices into points, one per curve; curve k runs from
+            corner k to corner k + 1.
+        t4_ratio: the k of the T4 test k C <= A and k C <= B (at least 2).
+        t5_cut_edges: edges on the cut of a two-curve region; 0 from the geometry.
+        max_quads: refuse a mesh larger than this.
+
+    Raises:
+        ValueError: the boundary cannot be meshed (the message says why and where).
+    """
+    array = np.asarray(points, dtype=np.float64)
+    return Mesh(_core.mesh_boundary(array, [int(c) for c in corners], int(t4_ratio),
+                                    int(t5_cut_edges), int(max_quads)))
+
+
+def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
+               faces: Optional[Iterable[int]] = None,
+               corners: Optional[Mapping[int, Sequence[int]]] = None,
+               keep_going: bool = False, allow_inverted: bool = False, threads: int = 0,
+               t4_ratio: int = 2, t5_cut_edges: int = 0,
+               max_quads: int = _MAX_QUADS) -> Mesh:
+    """Mesh the faces of a CAD shape, conforming across shared edges.
+
+    Args:
+        brep_text_or_path: BREP text (FreeCAD's ``Shape.exportBrepToString()``) or
+            the path of a .step/.stp, .iges/.igs or .brep file.
+        size: target edge length; 0 uses the bounding-box diagonal / 25.
+        faces: indices of the faces to mesh (FreeCAD's ``Shape.Faces`` order); None
+            meshes all.
+        corners: per face index, the shape vertex indices where its curves begin.
+        keep_going: mesh the other faces when one is refused (listed in
+            ``refused_faces``); otherwise a refused face raises ValueError.
+        allow_inverted: keep a face whose quads stay inverted after repair.
+        threads: threads meshing faces; 0 uses all cores (same output either way).
+        t4_ratio, t5_cut_edges, max_quads: as for mesh_boundary.
+
+    Raises:
+        ValueError: unreadable shape, bad options, or a refused face without
+            keep_going.
+    """
+    face_list = [int(f) for f in faces] if faces is not None else []
+    corner_map: Dict[int, List[int]] = {int(k): [int(v) for v in vs] for k, vs in (corners or {}).items()}
+    return Mesh(_core.mesh_shape(str(brep_text_or_path), float(size), face_list, corner_map,
+                                 bool(keep_going), bool(allow_inverted), int(threads),
+                                 int(t4_ratio), int(t5_cut_edges), int(max_quads)))

@@ -1,0 +1,28 @@
+from typing import Dict, Iterable, List, Mapping, Optional, Sequence, Union
+
+import numpy as np
+
+__all__ = ["Mesh", "mesh_boundary", "mesh_shape"]
+
+class Mesh:
+    nodes: np.ndarray
+    quads: np.ndarray
+    faces: List[dict]
+    refused_faces: List[dict]
+    quality: dict
+    edge_size: Optional[float]
+    changed_edges: List[dict]
+    def __init__(self, data: dict) -> None: ...
+    @property
+    def template_trees(self) -> List[str]: ...
+    @property
+    def template_tree(self) -> str: ...
+    def face_quads(self, face: int) -> np.ndarray: ...
+
+def mesh_boundary(points: Union[np.ndarray, Sequence[Sequence[float]]], corners: Sequence[int], *,
+                  t4_ratio: int = ..., t5_cut_edges: int = ..., max_quads: int = ...) -> Mesh: ...
+
+def mesh_shape(brep_text_or_path: str, *, size: float = ..., faces: Optional[Iterable[int]] = ...,
+               corners: Optional[Mapping[int, Sequence[int]]] = ..., keep_going: bool = ...,
+               allow_inverted: bool = ..., threads: int = ..., t4_ratio: int = ...,
+               t5_cut_edges: int = ..., max_quads: int = ...) -> Mesh: ...

@@ -1,0 +1,107 @@
+"""Tests of the tquad Python module under Debian's /usr/bin/python3 (no FreeCAD)."""
+import math
+import os
+import tempfile
+import unittest
+
+import numpy as np
+
+import tquad
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SHAPES = os.path.join(REPO, "resources", "shapes")
+
+
+def square(a, b, c, d):
+    """Unit square with a, b, c, d segments on its sides in loop order."""
+    corners, points = [], []
+    ends = [(0, 0), (1, 0), (1, 1), (0, 1)]
+    for k, n in enumerate((a, b, c, d)):
+        corners.append(len(points))
+        (x0, y0), (x1, y1) = ends[k], ends[(k + 1) % 4]
+        points += [(x0 + (x1 - x0) * i / n, y0 + (y1 - y0) * i / n, 0.0) for i in range(n)]
+    return np.array(points), corners
+
+
+def edge_uses(quads):
+    uses = {}
+    for q in quads.tolist():
+        for i in range(4):
+            e = tuple(sorted((q[i], q[(i + 1) % 4])))
+            uses[e] = uses.get(e, 0) + 1
+    return uses
+
+
+class MeshBoundaryTest(unittest.TestCase):
+    def test_table1_row_8d(self):
+        points, corners = square(4, 4, 8, 6)  # A=4 bottom, C=4, B=8 top, D=6
+        m = tquad.mesh_boundary(points, corners)
+        self.assertEqual(m.template_tree, "T2[T0,T0,T1[T0,T0,T0,T0]]", "paper's Table 1, row 8(d)")
+        self.assertEqual(m.nodes.shape[1], 3, "nodes are N x 3")
+        self.assertEqual(m.quads.shape[1], 4, "quads are M x 4")
+        self.assertEqual(m.quads.dtype, np.int32)
+        self.assertEqual(len(m.nodes), 1 + len(m.quads) + len(points) // 2, "V = 1 + F + E/2")
+        self.assertTrue(np.array_equal(m.nodes[:len(points)], points), "boundary points kept bit-exact")
+        self.assertEqual(m.quality["inverted"], 0, "no inverted quad")
+        self.assertGreater(m.quality["scaled_jacobian"]["min"], 0.3, "well-shaped quads")
+
+    def test_accepts_lists_and_2d_points(self):
+        points, corners = square(3, 3, 3, 3)
+        m = tquad.mesh_boundary(points[:, :2].tolist(), corners)
+        self.assertEqual(len(m.quads), 9, "a 3 x 3 grid")
+        self.assertTrue(np.all(m.nodes[:, 2] == 0.0), "2D points lie at z = 0")
+
+    def test_errors_are_value_errors_with_the_cli_message(self):
+        points, corners = square(4, 4, 4, 3)
+        with self.assertRaisesRegex(ValueError, "15 segments, an odd number"):
+            tquad.mesh_boundary(points, corners)
+        points, corners = square(4, 4, 4, 4)
+        with self.assertRaisesRegex(ValueError, "corner 3 has index 99"):
+            tquad.mesh_boundary(points, corners[:3] + [99])
+        bad = points.copy()
+        bad[5, 1] = math.nan
+        with self.assertRaisesRegex(ValueError, "point 5"):
+            tquad.mesh_boundary(bad, corners)
+        with self.assertRaisesRegex(ValueError, "N x 3"):
+            tquad.mesh_boundary(np.zeros((8, 5)), [0, 4])
+        with self.assertRaisesRegex(ValueError, "T4 ratio"):
+            tquad.mesh_boundary(points, corners, t4_ratio=1)
+
+
+class MeshShapeTest(unittest.TestCase):
+    def test_bracket_from_path_is_watertight(self):
+        m = tquad.mesh_shape(os.path.join(SHAPES, "filleted_bracket.brep"))
+        self.assertEqual(len(m.faces), 9, "every face of the bracket meshed")
+        self.assertEqual(m.refused_faces, [], "nothing refused")
+        self.assertTrue(all(c == 2 for c in edge_uses(m.quads).values()), "closed solid: watertight")
+        self.assertEqual(sum(f["quad_count"] for f in m.faces), len(m.quads), "face ranges cover the quads")
+        self.assertGreater(m.edge_size, 0, "default size reported")
+
+    def test_brep_text_gives_the_same_mesh_as_the_file(self):
+        path = os.path.join(SHAPES, "cylinder.brep")
+        with open(path) as f:
+            text = f.read()
+        a = tquad.mesh_shape(path, size=2.0)
+        b = tquad.mesh_shape(text, size=2.0)
+        self.assertTrue(np.array_equal(a.quads, b.quads), "same connectivity")
+        self.assertTrue(np.array_equal(a.nodes, b.nodes), "same nodes")
+
+    def test_options_and_errors(self):
+        path = os.path.join(SHAPES, "plate_with_hole.brep")
+        m = tquad.mesh_shape(path, faces=[0, 2], size=5.0)
+        self.assertEqual([f["face"] for f in m.faces], [0, 2], "only the selected faces")
+        self.assertEqual(m.face_quads(2).shape[1], 4, "quads of one face")
+        with self.assertRaisesRegex(ValueError, "face 9 does not exist"):
+            tquad.mesh_shape(path, faces=[9])
+        with self.assertRaisesRegex(ValueError, "cannot open"):
+            tquad.mesh_shape(os.path.join(SHAPES, "absent.step"))
+        with tempfile.TemporaryDirectory() as folder:
+            garbage = os.path.join(folder, "garbage.brep")
+            with open(garbage, "w") as f:
+                f.write("not a shape\n")
+            with self.assertRaisesRegex(ValueError, "not a BREP"):
+                tquad.mesh_shape(garbage)
+
+
+if __name__ == "__main__":
+    unittest.main()
