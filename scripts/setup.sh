@@ -20,6 +20,9 @@ packages=(
   libocct-data-exchange-dev libtbb-dev
   # python: the tquad module for Debian's python3 (FreeCAD's)
   pybind11-dev python3-dev python3-numpy
+  # FreeCAD (the workbench's host; brings its own OpenCASCADE 7.6 runtime) and a
+  # virtual display for its GUI test
+  freecad xvfb xauth
   # tests: real readers and the solver of the files written (meshio, Gmsh, CalculiX);
   # Gmsh is also the peer of bench/compare_gmsh.py
   python3-meshio gmsh python3-gmsh calculix-ccx
@@ -58,3 +61,7 @@ if [ ! -f "$build_dir/build.ninja" ]; then
   cmake -S "$repo_dir" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release
 fi
 cmake --build "$build_dir" --parallel "$(nproc)"
+
+# The FreeCAD workbench, with the module just built, for this user's freecad and
+# freecadcmd (freecad_workbench/install.sh --uninstall removes it).
+"$repo_dir/freecad_workbench/install.sh" "$build_dir/python/tquad"

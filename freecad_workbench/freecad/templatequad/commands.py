@@ -1,0 +1,91 @@
+"""GUI commands of the TemplateQuad workbench.
+
+TemplateQuad_Mesh: mesh the selected Part object (or only its selected faces) with a
+new TemplateQuad mesh object, put it in the active FEM analysis if there is one, and
+open its task panel. The work is factory.make_mesh; this module only adds the
+selection, the transaction, the analysis and the panel.
+"""
+import FreeCAD
+import FreeCADGui
+
+from . import paths
+
+MESH_COMMAND = "TemplateQuad_Mesh"
+
+#: Commands of the workbench's toolbar and menu, in order.
+COMMANDS = [MESH_COMMAND]
+
+
+def _has_faces(obj) -> bool:
+    """Whether obj carries a shape with faces (cheap: IsActive runs on every redraw)."""
+    shape = getattr(obj, "Shape", None)
+    if shape is None or not hasattr(shape, "countElement"):
+        return False
+    return not shape.isNull() and shape.countElement("Face") > 0
+
+
+def selected_source():
+    """The object to mesh and the face names selected on it, or (None, [])."""
+    for sel in FreeCADGui.Selection.getSelectionEx():
+        if _has_faces(sel.Object):
+            faces = [name for name in sel.SubElementNames if name.startswith("Face")]
+            return sel.Object, faces
+    return None, []
+
+
+def active_analysis(doc):
+    """The active FEM analysis of doc, or None (also when the FEM GUI is missing)."""
+    try:
+        import FemGui
+    except ImportError:
+        return None
+    analysis = FemGui.getActiveAnalysis()
+    if analysis is not None and analysis.Document == doc:
+        return analysis
+    return None
+
+
+class MeshCommand:
+    """Template quad mesh of the selected part or faces."""
+
+    def GetResources(self):
+        return {
+            "Pixmap": paths.icon("TemplateQuad_Mesh"),
+            "MenuText": "Template quad mesh",
+            "ToolTip": ("All-quadrilateral FEM mesh of the selected part or faces, by "
+                        "hierarchical templates; added to the active analysis"),
+        }
+
+    def IsActive(self):
+        if FreeCAD.ActiveDocument is None:
+            return False
+        return any(_has_faces(obj) for obj in FreeCADGui.Selection.getSelection())
+
+    def Activated(self):
+        from .factory import make_mesh
+
+        doc = FreeCAD.ActiveDocument
+        part, faces = selected_source()
+        if part is None:
+            return
+        doc.openTransaction("Template quad mesh")
+        try:
+            # No raise: a refused mesh still gets its object and task panel, where the
+            # user sees why and can set corners or keep-going.
+            mesh = make_mesh(doc, part, faces=faces, raise_on_error=False)
+            analysis = active_analysis(doc)
+            if analysis is not None:
+                analysis.addObject(mesh)
+        except Exception:
+            doc.abortTransaction()
+            raise
+        doc.commitTransaction()
+        # The mesh lies on the part's faces; hide the part so the mesh is seen.
+        part.ViewObject.Visibility = False
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.getDocument(doc).setEdit(mesh.Name)
+
+
+def register():
+    """Add the commands to FreeCADGui (the workbench calls this in Initialize())."""
+    FreeCADGui.addCommand(MESH_COMMAND, MeshCommand())

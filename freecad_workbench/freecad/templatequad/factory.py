@@ -1,0 +1,52 @@
+"""make_mesh(): the scriptable way to create a TemplateQuad mesh object.
+
+    >>> from freecad.templatequad import make_mesh
+    >>> mesh = make_mesh(doc, doc.Box, size=2.0)
+    >>> mesh.FemMesh.QuadrangleCount, mesh.TemplateTrees, mesh.Quality
+
+Works headless (freecadcmd) and in the GUI, where it also attaches the view provider.
+The GUI command calls it; it does not touch the selection, transactions or analyses.
+"""
+from typing import Iterable, Optional
+
+import FreeCAD
+
+from .mesh_object import TemplateQuadMesh
+
+
+def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]] = None,
+              t4_ratio: int = 2, keep_going: bool = False, name: str = "TemplateQuadMesh",
+              faces: Optional[Iterable[str]] = None, raise_on_error: bool = True):
+    """make_mesh(): add a TemplateQuad mesh of part_obj to doc, recompute, return it.
+
+    Args:
+        doc: the App.Document.
+        part_obj: the object to mesh (a Part feature or anything with a Shape).
+        size: target edge length in mm; 0 = automatic (bounding-box diagonal / 25).
+        corners: "FACE:V1,V2,..." entries (see the Corners property).
+        t4_ratio: the k of the T4 template test (at least 2).
+        keep_going: mesh the other faces when one is refused.
+        name: the object name (FreeCAD appends a number when it is taken).
+        faces: FreeCAD face names ("Face1", ...) to mesh; None meshes all faces.
+        raise_on_error: raise when the mesh fails (the object stays in the document,
+            empty and marked invalid); False leaves the caller to look at
+            ``obj.Proxy.last_error`` (the GUI command does, to open the task panel).
+
+    Raises:
+        ValueError: meshing failed and raise_on_error is set; the message says why.
+    """
+    obj = doc.addObject("Fem::FemMeshObjectPython", name)
+    TemplateQuadMesh(obj)
+    obj.Part = part_obj
+    obj.Size = float(size)
+    obj.Corners = list(corners or [])
+    obj.Faces = list(faces or [])
+    obj.T4Ratio = int(t4_ratio)
+    obj.KeepGoing = bool(keep_going)
+    if FreeCAD.GuiUp:
+        from .view_provider import ViewProviderTemplateQuadMesh
+        ViewProviderTemplateQuadMesh(obj.ViewObject)
+    doc.recompute()
+    if raise_on_error and obj.Proxy.last_error:
+        raise ValueError(obj.Proxy.last_error)
+    return obj

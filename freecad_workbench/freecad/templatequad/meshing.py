@@ -1,0 +1,186 @@
+"""The work behind a TemplateQuad mesh object: shape -> tquad mesh -> Fem.FemMesh.
+
+Pure functions of their arguments (no document objects, no GUI), so the mesh object's
+execute() stays a few lines and everything here can be called from a script.
+
+Indices: FreeCAD names sub-shapes from 1 ("Face3", "Vertex7"); the ``tquad`` module
+numbers them from 0 in the same order (``Shape.Faces`` / ``Shape.Vertexes``). User-facing
+strings use FreeCAD's names; the calls into ``tquad`` use 0-based indices.
+"""
+import os
+import re
+import sys
+from typing import Dict, Iterable, List, Optional, Sequence
+
+from . import paths
+
+TQUAD_MISSING_MESSAGE = (
+    "TemplateQuad: the Python module 'tquad' was not found or does not load ({error}). "
+    "It is built by the project's CMake build (target tquad_python, into build/python/tquad) "
+    "and copied into the add-on by freecad_workbench/install.sh; build it, then run "
+    "install.sh again.\n")
+
+
+class TquadMissing(ImportError):
+    """The compiled ``tquad`` module cannot be imported."""
+
+
+def load_tquad():
+    """load_tquad(): import and return the ``tquad`` module.
+
+    FreeCAD puts the add-on root on sys.path when it loads the add-on, and install.sh
+    copies the module there. When the package is imported some other way (a script
+    that put freecad_workbench/ on sys.path), the root is added here as a fallback.
+
+    Raises:
+        TquadMissing: with a message saying the module was not built or installed.
+    """
+    try:
+        import tquad
+        return tquad
+    except ImportError as error:
+        failure = error
+    if paths.ADDON_ROOT not in sys.path and os.path.isdir(
+            os.path.join(paths.ADDON_ROOT, "tquad")):
+        sys.path.append(paths.ADDON_ROOT)
+        try:
+            import tquad
+            return tquad
+        except ImportError as error:
+            failure = error
+    raise TquadMissing(TQUAD_MISSING_MESSAGE.format(error=failure)) from failure
+
+
+_FACE = re.compile(r"^(?:face)?(\d+)$", re.IGNORECASE)
+_VERTEX = re.compile(r"^(?:vertex)?(\d+)$", re.IGNORECASE)
+
+
+def _index(token: str, pattern, kind: str, entry: str) -> int:
+    """One face or vertex reference: "Face4"/"Vertex4" are 1-based, "3" is 0-based."""
+    match = pattern.match(token.strip())
+    if not match:
+        raise ValueError(f"Corners entry '{entry}': '{token.strip()}' is not a {kind} "
+                         f"(write {kind.capitalize()}N, 1-based, or a 0-based index)")
+    number = int(match.group(1))
+    if token.strip()[0].isdigit():
+        return number
+    if number < 1:
+        raise ValueError(f"Corners entry '{entry}': FreeCAD names count from "
+                         f"{kind.capitalize()}1")
+    return number - 1
+
+
+def parse_corners(entries: Iterable[str]) -> Dict[int, List[int]]:
+    """parse_corners(): the Corners property as tquad's {face: [vertex, ...]} (0-based).
+
+    Each entry is ``FACE:V1,V2,...`` (2 to 4 vertices, where the face's boundary curves
+    begin), written either with FreeCAD's names, ``Face4:Vertex1,Vertex5,Vertex8``
+    (1-based, as the selection shows them), or with tquad's 0-based indices,
+    ``3:0,4,7`` (as ``tquad mesh --corners``). Blank entries are ignored.
+
+    Raises:
+        ValueError: an entry that cannot be read; the message quotes it.
+    """
+    corners: Dict[int, List[int]] = {}
+    for entry in entries:
+        if not entry.strip():
+            continue
+        face_text, sep, vertex_text = entry.partition(":")
+        if not sep:
+            raise ValueError(f"Corners entry '{entry}': expected FACE:V1,V2,... "
+                             "(e.g. Face4:Vertex1,Vertex5,Vertex8,Vertex3)")
+        face = _index(face_text, _FACE, "face", entry)
+        vertices = [_index(v, _VERTEX, "vertex", entry)
+                    for v in vertex_text.split(",") if v.strip()]
+        if not 2 <= len(vertices) <= 4:
+            raise ValueError(f"Corners entry '{entry}': a face has 2, 3 or 4 corners, "
+                             f"not {len(vertices)}")
+        if face in corners:
+            raise ValueError(f"Corners entry '{entry}': Face{face + 1} is given twice")
+        corners[face] = vertices
+    return corners
+
+
+def parse_faces(names: Iterable[str]) -> Optional[List[int]]:
+    """parse_faces(): the Faces property ("Face3", ...) as 0-based indices; None = all."""
+    indices = [_index(name, _FACE, "face", name) for name in names if name.strip()]
+    return sorted(set(indices)) if indices else None
+
+
+def mesh_shape(shape, size: float = 0.0, faces: Optional[Sequence[int]] = None,
+               corners: Optional[Dict[int, List[int]]] = None, t4_ratio: int = 2,
+               keep_going: bool = False):
+    """mesh_shape(): mesh a Part.Shape with tquad; returns the tquad.Mesh.
+
+    The shape goes over as BREP text (``exportBrepToString``), which keeps its
+    placement, so the nodes are in global coordinates. Arguments as tquad.mesh_shape.
+
+    Raises:
+        TquadMissing: the module is not installed.
+        ValueError: tquad refused the shape or a face (message from tquad).
+    """
+    tquad = load_tquad()
+    return tquad.mesh_shape(shape.exportBrepToString(), size=float(size), faces=faces,
+                            corners=corners or None, keep_going=bool(keep_going),
+                            t4_ratio=int(t4_ratio))
+
+
+def to_femmesh(mesh):
+    """to_femmesh(): a Fem.FemMesh of the tquad mesh's quads (node and element ids from 1).
+
+    Node i (0-based in tquad) becomes node i + 1; quad j becomes face element j + 1 with
+    the same counter-clockwise node order, so the shell normals follow the CAD faces'
+    outer normals. Built with addNode/addFace: the simplest correct way, and fast enough
+    (about 6 s per million quads, see PLATFORM.md); a file round trip would only pay off
+    for meshes far larger than shells are meshed with.
+    """
+    import Fem  # here, not at module level: importing this package stays cheap
+
+    femmesh = Fem.FemMesh()
+    add_node = femmesh.addNode
+    for node_id, (x, y, z) in enumerate(mesh.nodes.tolist(), start=1):
+        add_node(x, y, z, node_id)
+    add_face = femmesh.addFace
+    for quad_id, quad in enumerate((mesh.quads + 1).tolist(), start=1):
+        add_face(quad, quad_id)
+    return femmesh
+
+
+def quality_summary(mesh) -> str:
+    """quality_summary(): one line: counts, scaled Jacobian and Lee-Lo min/avg, bad quads."""
+    q = mesh.quality
+    sj, ll = q["scaled_jacobian"], q["lee_lo"]
+    return (f"{len(mesh.quads)} quads, {len(mesh.nodes)} nodes; "
+            f"scaled Jacobian min {sj['min']:.3f} avg {sj['avg']:.3f}; "
+            f"Lee-Lo min {ll['min']:.3f} avg {ll['avg']:.3f}; "
+            f"inverted {q['inverted']}, degenerate {q['degenerate']}")
+
+
+def template_tree_lines(mesh) -> List[str]:
+    """template_tree_lines(): "FaceN: <tree> (<count> quads)" per meshed face."""
+    return [f"Face{f['face'] + 1}: {f['template_tree']} ({f['quad_count']} quads)"
+            for f in mesh.faces]
+
+
+def refused_face_lines(mesh) -> List[str]:
+    """refused_face_lines(): "FaceN: <reason>" per face tquad did not mesh.
+
+    tquad's reasons start with its own 0-based "face k"; that prefix is dropped so the
+    line names the face once, the way FreeCAD does.
+    """
+    return [f"Face{r['face'] + 1}: " + re.sub(rf"^face {r['face']}\b\s*", "", r["reason"])
+            for r in mesh.refused_faces]
+
+
+def explain_tquad_error(message: str) -> str:
+    """explain_tquad_error(): a tquad error message, with a note on its 0-based numbers.
+
+    tquad speaks the command line's language (0-based faces, --keep-going); the note
+    maps that onto what the FreeCAD user sees and sets.
+    """
+    notes = []
+    if re.search(r"\b(face|vertex|edge) \d", message):
+        notes.append("tquad counts from 0: its face 0 is FreeCAD's Face1, vertex 0 is Vertex1")
+    if "--keep-going" in message:
+        notes.append("--keep-going is the KeepGoing property")
+    return message + (f" [{'; '.join(notes)}]" if notes else "")

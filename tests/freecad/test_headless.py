@@ -1,0 +1,248 @@
+"""Headless tests of the TemplateQuad add-on, run inside freecadcmd.
+
+The add-on is the copy run_freecad_tests.sh installed into a temporary
+FREECAD_USER_HOME, so these also check that FreeCAD finds it the way a user's FreeCAD
+would. The reference for counts is the tquad module itself on the same BREP text.
+"""
+import os
+import sys
+import tempfile
+import unittest
+
+import FreeCAD
+import Part
+
+
+def _tquad():
+    import tquad
+    return tquad
+
+
+class AddonInstallTest(unittest.TestCase):
+    """FreeCAD loads the installed add-on and its metadata."""
+
+    def test_package_imports_from_the_user_mod_directory(self):
+        import freecad.templatequad as addon
+        mod_dir = os.path.join(FreeCAD.getUserAppDataDir(), "Mod", "TemplateQuad")
+        self.assertTrue(os.path.realpath(addon.__file__).startswith(os.path.realpath(mod_dir)),
+                        f"freecad.templatequad came from {addon.__file__}, not {mod_dir}")
+        self.assertTrue(callable(addon.make_mesh), "make_mesh is not exported")
+        self.assertTrue(os.path.realpath(_tquad().__file__).startswith(os.path.realpath(mod_dir)),
+                        "tquad is not the copy install.sh put into the add-on")
+
+    def test_package_xml_is_read_by_freecad(self):
+        path = os.path.join(FreeCAD.getUserAppDataDir(), "Mod", "TemplateQuad", "package.xml")
+        meta = FreeCAD.Metadata(path)
+        self.assertEqual(meta.Name, "TemplateQuad", "package name")
+        self.assertEqual(meta.Version, "0.1.0", "package version")
+        workbenches = meta.Content.get("workbench", [])
+        self.assertEqual([w.Classname for w in workbenches], ["TemplateQuadWorkbench"],
+                         "one workbench entry with the workbench class name")
+        icon = os.path.join(os.path.dirname(path), workbenches[0].Icon)
+        self.assertTrue(os.path.isfile(icon), f"workbench icon {icon} missing")
+
+
+class CornerParsingTest(unittest.TestCase):
+    """The Corners property's two spellings mean the same thing."""
+
+    def test_freecad_names_and_tquad_indices(self):
+        from freecad.templatequad import meshing
+        self.assertEqual(meshing.parse_corners(["Face4:Vertex1,Vertex5,Vertex8", "0:1,2"]),
+                         {3: [0, 4, 7], 0: [1, 2]}, "FreeCAD names are 1-based, digits 0-based")
+        self.assertEqual(meshing.parse_faces(["Face3", "Face1"]), [0, 2], "face names")
+        self.assertIsNone(meshing.parse_faces([]), "no faces means all faces")
+        for bad in ["Face1", "Face1:Vertex1", "Face0:Vertex1,Vertex2", "Edge1:1,2",
+                    "Face1:1,2", "Face1:1,2,3,4,5"]:
+            entries = [bad, "Face1:1,2"] if bad == "Face1:1,2" else [bad]
+            with self.assertRaises(ValueError, msg=f"'{bad}' should be refused"):
+                meshing.parse_corners(entries)
+
+
+class MeshObjectTest(unittest.TestCase):
+    """make_mesh on Part shapes: all quads, same mesh as tquad, re-meshes on change."""
+
+    def setUp(self):
+        self.doc = FreeCAD.newDocument("TemplateQuadHeadless")
+
+    def tearDown(self):
+        FreeCAD.closeDocument(self.doc.Name)
+
+    def _part(self, shape, name):
+        obj = self.doc.addObject("Part::Feature", name)
+        obj.Shape = shape
+        self.doc.recompute()
+        return obj
+
+    def _filleted_box(self):
+        box = Part.makeBox(40, 30, 20)
+        vertical = [e for e in box.Edges
+                    if abs(e.Vertexes[0].Point.z - e.Vertexes[1].Point.z) > 1e-9]
+        return box.makeFillet(5, vertical[:2])
+
+    def _assert_same_as_tquad(self, mesh_obj, shape, size):
+        femmesh = mesh_obj.FemMesh
+        reference = _tquad().mesh_shape(shape.exportBrepToString(), size=size)
+        self.assertFalse(reference.refused_faces, "tquad refused a face of the test shape")
+        self.assertEqual(femmesh.NodeCount, len(reference.nodes), "node count vs tquad")
+        self.assertEqual(femmesh.FaceCount, len(reference.quads), "element count vs tquad")
+        self.assertEqual(femmesh.QuadrangleCount, femmesh.FaceCount, "not all quadrilaterals")
+        self.assertEqual(femmesh.TriangleCount, 0, "triangles in the mesh")
+        self.assertEqual(femmesh.VolumeCount, 0, "volume elements in a surface mesh")
+        self.assertEqual(len(mesh_obj.TemplateTrees), len(shape.Faces), "one tree per face")
+        self.assertEqual(list(mesh_obj.RefusedFaces), [], "refused faces")
+        self.assertTrue(mesh_obj.Quality.startswith(f"{len(reference.quads)} quads"),
+                        f"quality summary: {mesh_obj.Quality}")
+        self.assertEqual(mesh_obj.Proxy.last_error, "", "error after a good mesh")
+
+    def test_box_is_all_quads_and_equals_tquad(self):
+        from freecad.templatequad import make_mesh
+        part = self._part(Part.makeBox(10, 20, 30), "Box")
+        mesh = make_mesh(self.doc, part, size=2.5)
+        self.assertTrue(mesh.isDerivedFrom("Fem::FemMeshObject"), "not a FEM mesh object")
+        self.assertIs(mesh.Part, part, "Part link (the CalculiX writer reads it)")
+        self._assert_same_as_tquad(mesh, part.Shape, 2.5)
+
+    def test_filleted_box_is_all_quads_and_equals_tquad(self):
+        from freecad.templatequad import make_mesh
+        part = self._part(self._filleted_box(), "FilletedBox")
+        mesh = make_mesh(self.doc, part, size=3.0)
+        self._assert_same_as_tquad(mesh, part.Shape, 3.0)
+
+    def test_quads_turn_counter_clockwise_around_the_outer_normal(self):
+        # Shell normals decide the sign of pressure loads: the 1-based FemMesh must
+        # keep tquad's orientation. On a box centred at c, outward means away from c.
+        from freecad.templatequad import make_mesh
+        part = self._part(Part.makeBox(10, 20, 30), "Box")
+        femmesh = make_mesh(self.doc, part, size=5.0).FemMesh
+        centre = FreeCAD.Vector(5, 10, 15)
+        for element in femmesh.Faces:
+            a, b, c, d = (femmesh.getNodeById(n) for n in femmesh.getElementNodes(element))
+            normal = (c - a).cross(d - b)
+            outward = (a + b + c + d) * 0.25 - centre
+            self.assertGreater(normal.dot(outward), 0, f"element {element} faces inwards")
+
+    def test_changing_size_remeshes_on_recompute(self):
+        from freecad.templatequad import make_mesh
+        part = self._part(self._filleted_box(), "FilletedBox")
+        mesh = make_mesh(self.doc, part, size=4.0)
+        coarse = mesh.FemMesh.FaceCount
+        mesh.Size = 2.0
+        self.doc.recompute()
+        fine = mesh.FemMesh.FaceCount
+        self.assertGreater(fine, coarse, "a smaller Size must give more elements")
+        self._assert_same_as_tquad(mesh, part.Shape, 2.0)
+
+    def test_part_change_propagates(self):
+        from freecad.templatequad import make_mesh
+        box = self.doc.addObject("Part::Box", "Box")
+        self.doc.recompute()
+        mesh = make_mesh(self.doc, box, size=2.0)
+        before = mesh.FemMesh.FaceCount
+        box.Length = 30
+        self.doc.recompute()
+        self.assertGreater(mesh.FemMesh.FaceCount, before, "the mesh follows its Part")
+
+    def test_faces_subset(self):
+        from freecad.templatequad import make_mesh
+        part = self._part(Part.makeBox(10, 20, 30), "Box")
+        mesh = make_mesh(self.doc, part, size=2.0, faces=["Face2"])
+        reference = _tquad().mesh_shape(part.Shape.exportBrepToString(), size=2.0, faces=[1])
+        self.assertEqual(mesh.FemMesh.FaceCount, len(reference.quads), "one face's quads")
+        self.assertEqual(len(mesh.TemplateTrees), 1, "one face meshed")
+        self.assertTrue(mesh.TemplateTrees[0].startswith("Face2:"), mesh.TemplateTrees[0])
+
+    def test_fem_lookups_find_the_nodes_of_each_face_and_edge(self):
+        # FEM constraints, materials and thicknesses find their nodes geometrically
+        # (FemMesh.getNodesBy*), so every node must lie on its CAD face and edges.
+        from freecad.templatequad import make_mesh
+        shape = Part.Shape()
+        shape.read(os.path.join(os.environ["TQ_TEST_DIR"], os.pardir, os.pardir,
+                                "resources", "shapes", "plate_with_hole.brep"))
+        part = self._part(shape, "Plate")
+        femmesh = make_mesh(self.doc, part, size=3.0).FemMesh
+        reference = _tquad().mesh_shape(shape.exportBrepToString(), size=3.0)
+        for k, face in enumerate(shape.Faces):
+            expected = len(set(reference.face_quads(k).flatten().tolist()))
+            self.assertEqual(len(femmesh.getNodesByFace(face)), expected,
+                             f"nodes found on Face{k + 1}")
+        for k, edge in enumerate(shape.Edges):
+            self.assertGreaterEqual(len(femmesh.getNodesByEdge(edge)), 2,
+                                    f"nodes found on Edge{k + 1}")
+
+    def test_refused_face_is_reported_and_keep_going_meshes_the_rest(self):
+        from freecad.templatequad import make_mesh
+        holed = Part.makePlane(100, 60).cut(
+            Part.makeCylinder(10, 1, FreeCAD.Vector(50, 30, -0.5)))  # a face with a hole
+        square = Part.makePlane(20, 20, FreeCAD.Vector(200, 0, 0))
+        part = self._part(Part.makeCompound(holed.Faces + [square]), "HoledAndSquare")
+        with self.assertRaises(ValueError, msg="a refused face without KeepGoing") as caught:
+            make_mesh(self.doc, part, size=5.0)
+        self.assertIn("Face1", str(caught.exception), "the error maps tquad's face 0")
+        mesh = make_mesh(self.doc, part, size=5.0, keep_going=True)
+        self.assertEqual(len(mesh.RefusedFaces), 1, "one refused face")
+        self.assertTrue(mesh.RefusedFaces[0].startswith("Face1: "), mesh.RefusedFaces[0])
+        self.assertIn("hole", mesh.RefusedFaces[0], "the reason is kept")
+        self.assertEqual([t.split(":")[0] for t in mesh.TemplateTrees], ["Face2"],
+                         "the other face is meshed")
+        self.assertEqual(mesh.FemMesh.FaceCount, 16, "20 x 20 square at size 5")
+
+    def test_bad_corners_fail_loudly_and_leave_no_stale_mesh(self):
+        from freecad.templatequad import make_mesh
+        part = self._part(Part.makeBox(10, 20, 30), "Box")
+        mesh = make_mesh(self.doc, part, size=2.0)
+        mesh.Corners = ["Face1:Vertex1"]
+        self.doc.recompute()
+        self.assertIn("Invalid", mesh.State, "a failed mesh must mark the object invalid")
+        self.assertEqual(mesh.FemMesh.FaceCount, 0, "a failed mesh must not keep old elements")
+        self.assertIn("2, 3 or 4 corners", mesh.Proxy.last_error, mesh.Proxy.last_error)
+        with self.assertRaises(ValueError, msg="make_mesh raises by default"):
+            make_mesh(self.doc, part, corners=["Face1:Vertex1"])
+
+    def test_corner_override_reaches_tquad(self):
+        from freecad.templatequad import make_mesh
+        part = self._part(Part.makeBox(10, 20, 30), "Box")
+        face = part.Shape.Faces[0]
+        corners = [next(i for i, v in enumerate(part.Shape.Vertexes) if v.isSame(fv))
+                   for fv in face.Vertexes][:3]  # 3 curves instead of the automatic 4
+        entry = "Face1:" + ",".join(f"Vertex{i + 1}" for i in corners)
+        mesh = make_mesh(self.doc, part, size=2.0, corners=[entry])
+        reference = _tquad().mesh_shape(part.Shape.exportBrepToString(), size=2.0,
+                                        corners={0: corners})
+        self.assertEqual(mesh.TemplateTrees[0].split(" ")[1], reference.template_trees[0],
+                         "the Corners property must reach tquad as 0-based vertex indices")
+        self.assertEqual(mesh.FemMesh.FaceCount, len(reference.quads), "element count")
+
+    def test_missing_tquad_module_is_reported(self):
+        from freecad.templatequad import make_mesh
+        part = self._part(Part.makeBox(10, 20, 30), "Box")
+        saved = sys.modules.get("tquad")
+        sys.modules["tquad"] = None  # makes "import tquad" raise ImportError
+        try:
+            with self.assertRaises(ValueError) as caught:
+                make_mesh(self.doc, part)
+        finally:
+            sys.modules["tquad"] = saved
+        self.assertIn("'tquad' was not found", str(caught.exception), "the user's message")
+        self.assertIn("install.sh", str(caught.exception), "says how to fix it")
+
+    def test_saved_document_reopens_and_remeshes(self):
+        from freecad.templatequad import make_mesh
+        part = self._part(self._filleted_box(), "FilletedBox")
+        mesh = make_mesh(self.doc, part, size=4.0, t4_ratio=3, keep_going=True)
+        count, name = mesh.FemMesh.FaceCount, mesh.Name
+        path = os.path.join(tempfile.mkdtemp(), "tq.FCStd")
+        self.doc.saveAs(path)
+        FreeCAD.closeDocument(self.doc.Name)
+        self.doc = FreeCAD.openDocument(path)
+        mesh = self.doc.getObject(name)
+        self.assertEqual(mesh.Proxy.Type, "TemplateQuad::Mesh", "proxy restored")
+        self.assertEqual((mesh.T4Ratio, mesh.KeepGoing, mesh.Size.Value), (3, True, 4.0),
+                         "inputs restored")
+        self.assertEqual(mesh.FemMesh.FaceCount, count, "saved mesh restored")
+        mesh.touch()
+        self.doc.recompute()
+        self.assertEqual(mesh.FemMesh.FaceCount, count, "re-mesh after reopening")
+
+
+if __name__ == "__main__":
+    unittest.main()
