@@ -18,7 +18,8 @@
 // Then BRepAdaptor_Surface::Value alone is timed on as many (u, v) points as the mesh
 // has interior nodes, on a grid over BRepTools::UVBounds, visited in row order (as a
 // mapped mesh creates its nodes) and in a shuffled order (no locality); the ratio
-// placement per node / one evaluation is the project's target (<= 2).
+// placement per node / one evaluation is the project's target (<= 2). D1 (point and
+// derivatives) is timed too: the inverted-quad check evaluates it once per quad.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -176,7 +177,7 @@ struct Result {
   long long inverted = 0, projected_faces = 0;
   std::vector<MeshRun> runs;
   long long eval_points = 0;
-  EvalTiming row_order, shuffled;
+  EvalTiming row_order, shuffled, d1_row_order;
   double checksum = 0;  // keeps the evaluations from being optimized away
 
   double med(double MeshRun::*field) const {
@@ -192,19 +193,16 @@ struct Result {
   double placement_per_node() const { return med(&MeshRun::placement) / interior_nodes; }
 };
 
-// Times `passes` passes of surface.Value over the points (u, v pairs); returns the
-// seconds per evaluation of each pass.
-std::vector<double> time_evaluations(const BRepAdaptor_Surface& surface,
-                                     const std::vector<std::pair<double, double>>& points, int passes,
-                                     double& checksum) {
+// Times `passes` passes of evaluate(u, v) over the points; returns the seconds per
+// evaluation of each pass. evaluate returns a number summed into the checksum.
+template <typename Evaluate>
+std::vector<double> time_evaluations(const std::vector<std::pair<double, double>>& points, int passes,
+                                     double& checksum, const Evaluate& evaluate) {
   std::vector<double> per_eval;
   for (int p = 0; p < passes; ++p) {
     double sum = 0;
     const auto start = std::chrono::steady_clock::now();
-    for (const auto& [u, v] : points) {
-      const gp_Pnt q = surface.Value(u, v);
-      sum += q.X() + q.Y() + q.Z();
-    }
+    for (const auto& [u, v] : points) sum += evaluate(u, v);
     per_eval.push_back(seconds_since(start) / static_cast<double>(points.size()));
     checksum += sum;
   }
@@ -259,10 +257,23 @@ Result run(const BenchOptions& o) {
   r.eval_points = static_cast<long long>(points.size());
   // One adaptor for all passes, as face_mesher makes one per face.
   const BRepAdaptor_Surface surface(face);
-  r.row_order.times = time_evaluations(surface, points, o.runs, r.checksum);
+  const auto value = [&surface](double u, double v) {
+    const gp_Pnt q = surface.Value(u, v);
+    return q.X() + q.Y() + q.Z();
+  };
+  // D1 (point and first derivatives): what the inverted-quad check after placement
+  // evaluates once per quad, inside "other".
+  const auto d1 = [&surface](double u, double v) {
+    gp_Pnt q;
+    gp_Vec du, dv;
+    surface.D1(u, v, q, du, dv);
+    return q.X() + du.X() + dv.Y();
+  };
+  r.row_order.times = time_evaluations(points, o.runs, r.checksum, value);
+  r.d1_row_order.times = time_evaluations(points, o.runs, r.checksum, d1);
   std::mt19937_64 random(12345);
   std::shuffle(points.begin(), points.end(), random);
-  r.shuffled.times = time_evaluations(surface, points, o.runs, r.checksum);
+  r.shuffled.times = time_evaluations(points, o.runs, r.checksum, value);
   return r;
 }
 
@@ -292,6 +303,8 @@ void print_table(const BenchOptions& o, const Result& r) {
               r.u0, r.u1, r.v0, r.v1);
   std::printf("  %-30s %.2f x row order, %.2f x shuffled (target <= 2)\n", "placement / evaluation",
               per_node / r.row_order.per_eval(), per_node / r.shuffled.per_eval());
+  std::printf("  %-30s %.1f ns row order; x quads = %.3f s (the inverted check's share of other)\n",
+              "one D1(u, v)", r.d1_row_order.per_eval() * 1e9, r.d1_row_order.per_eval() * r.quads);
 }
 
 void print_json(const BenchOptions& o, const Result& r) {
@@ -307,10 +320,11 @@ void print_json(const BenchOptions& o, const Result& r) {
               "\"quads_per_s\":%.1f,\"placement_per_node_ns\":%.3f,\"eval_points\":%lld,"
               "\"eval_row_order_ns\":%.3f,\"eval_shuffled_ns\":%.3f,"
               "\"placement_over_eval_row_order\":%.4f,\"placement_over_eval_shuffled\":%.4f,"
-              "\"target_ratio\":2}\n",
+              "\"target_ratio\":2,\"d1_row_order_ns\":%.3f}\n",
               total, r.med(&MeshRun::templates), r.med(&MeshRun::placement), r.med_other(), r.quads / total,
               per_node * 1e9, r.eval_points, r.row_order.per_eval() * 1e9, r.shuffled.per_eval() * 1e9,
-              per_node / r.row_order.per_eval(), per_node / r.shuffled.per_eval());
+              per_node / r.row_order.per_eval(), per_node / r.shuffled.per_eval(),
+              r.d1_row_order.per_eval() * 1e9);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // tquad: the command-line front end. Parses the arguments and runs the job in
 // run_mesh_command; exit status 0 done, 2 wrong input or usage, 1 internal failure.
 #include <climits>
+#include <cmath>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -66,7 +67,17 @@ int run_cli(int argc, char** argv) {
                    "diagonal / 25). Each edge gets round(length / H) segments, at least 1,\n"
                    "then counts change by one where a face's total would be odd.")
       ->type_name("H")
-      ->check(CLI::PositiveNumber.description(""));
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            try {
+              std::size_t used = 0;
+              const double value = std::stod(text, &used);
+              if (used == text.size() && value > 0 && std::isfinite(value)) return "";
+            } catch (const std::exception&) {
+            }
+            return "--size must be a positive length, got '" + text + "'";
+          },
+          "", "positive"));
   mesh->add_option("--faces", command.faces,
                    "CAD input: mesh only these faces (0-based, as FreeCAD's Shape.Faces\n"
                    "order), e.g. 0,2,5-7")

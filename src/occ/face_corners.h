@@ -3,7 +3,9 @@
 //   - one edge (a disk): two curves, split at the node opposite its vertex;
 //   - otherwise the wire's vertices that turn by at least 20 degrees (convex); when
 //     more than 4, the 4 closest to 90 degrees whose opposite curves have the most
-//     similar lengths; tangent joins (fillets) are not corners;
+//     similar lengths; tangent joins (fillets) are not corners, but with fewer than
+//     4 sharp vertices a fillet's arc that turns 60 degrees or more gives a corner
+//     at its middle node;
 //   - fewer than 2 such vertices: the first vertices of the wire (up to 4), or for a
 //     smooth closed loop two opposite nodes.
 // `requested` (shape vertex indices, --corners) overrides the choice.
@@ -17,7 +19,13 @@ namespace tquad {
 
 // Throws InputError naming the face and vertex when a requested vertex is not on the
 // face's outer wire, or fewer than 2 / more than 4 are requested.
+// with_rounded: also take corners in fillets' arcs when fewer than 4 vertices are sharp.
 std::vector<int> choose_face_corners(const FaceBoundary& boundary, int face,
-                                     const std::vector<int>& requested);
+                                     const std::vector<int>& requested, bool with_rounded);
+
+// The corner sets worth trying, best guess first: the requested corners alone, or
+// the sharp vertices' choice and, when it differs, the one with rounded corners.
+std::vector<std::vector<int>> corner_choices(const FaceBoundary& boundary, int face,
+                                             const std::vector<int>& requested);
 
 }  // namespace tquad

@@ -36,11 +36,15 @@ void take_quads(const QuadMesh& mesh, bool reverse, FaceMeshResult& out) {
 // `param` holds the mesh's own coordinates: (u, v), or polar (x, y) around a pole,
 // where a quad's centre is taken before going back to (u, v) (a quad across the seam
 // has corners at u near 0 and near the period).
-long long inverted_on_surface(const TopoDS_Face& face, const std::vector<Quad>& quads,
-                              const std::vector<Vec3>& param, const std::optional<PolarMap>& polar,
-                              const std::vector<Vec3>& xyz) {
+// Counts the quads with a corner inverted against the face's outer normal at the
+// quad's centre, and stores the lowest scaled Jacobian in out.worst_corner.
+void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
+                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
+                      FaceMeshResult& out) {
+  const std::vector<Quad>& quads = out.quads;
   const BRepAdaptor_Surface surface(face);
   long long inverted = 0;
+  double worst = 1.0;
   for (const Quad& q : quads) {
     Vec3 centre;
     for (NodeId n : q) centre += 0.25 * param[n];
@@ -51,13 +55,18 @@ long long inverted_on_surface(const TopoDS_Face& face, const std::vector<Quad>& 
     gp_Vec outer = du.Crossed(dv);
     if (face.Orientation() == TopAbs_REVERSED) outer.Reverse();
     const Vec3 normal{outer.X(), outer.Y(), outer.Z()};
+    bool bad = false;
     for (int i = 0; i < 4; ++i) {
       const Vec3 a = xyz[q[(i + 1) % 4]] - xyz[q[i]], b = xyz[q[(i + 3) % 4]] - xyz[q[i]];
       const double scale = norm(a) * norm(b) * norm(normal);
-      if (scale == 0 || dot(cross(a, b), normal) < -kInvertedBelow * scale) { ++inverted; break; }
+      const double jacobian = scale > 0 ? dot(cross(a, b), normal) / scale : -1.0;
+      worst = std::min(worst, jacobian);
+      bad = bad || jacobian < -kInvertedBelow;
     }
+    inverted += bad ? 1 : 0;
   }
-  return inverted;
+  out.inverted = inverted;
+  out.worst_corner = worst;
 }
 
 // Local positions and parameters: the loop's nodes, then the interior ones.
@@ -87,7 +96,7 @@ FaceMeshResult mesh_in_parameter_space(const TopoDS_Face& face, const FaceBounda
     out.interior.push_back(to_vec3(surface.Value(uv.x, uv.y)));
   }
   out.placement_seconds = seconds_since(placing);
-  out.inverted = inverted_on_surface(face, out.quads, uv_mesh.nodes, b.polar, local_positions(b, nodes, out.interior));
+  check_on_surface(face, uv_mesh.nodes, b.polar, local_positions(b, nodes, out.interior), out);
   return out;
 }
 
@@ -137,7 +146,7 @@ FaceMeshResult mesh_in_space(const TopoDS_Face& face, const FaceBoundary& b, con
     out.interior.push_back(to_vec3(geom->Value(previous.X(), previous.Y()).Transformed(to_global)));
   }
   out.placement_seconds = seconds_since(placing);
-  out.inverted = inverted_on_surface(face, out.quads, uv, std::nullopt, local_positions(b, nodes, out.interior));
+  check_on_surface(face, uv, std::nullopt, local_positions(b, nodes, out.interior), out);
   return out;
 }
 

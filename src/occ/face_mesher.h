@@ -24,6 +24,7 @@ struct FaceMeshResult {
   std::string template_tree;
   bool used_projection = false;  // the 3D fallback was used
   long long inverted = 0;        // quads still inverted after repair
+  double worst_corner = 1.0;     // lowest scaled Jacobian against the outer normal
   double template_seconds = 0;   // building the template mesh (core)
   double placement_seconds = 0;  // putting its interior nodes on the surface
 };

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cmath>
 #include <exception>
+#include <optional>
 #include <thread>
 
 #include "core/input_error.h"
@@ -41,6 +42,32 @@ std::vector<char> meshed_faces(const ShapeIndex& index, const std::vector<int>& 
   return meshed;
 }
 
+// --corners is the user's instruction, not a property of a face: a mistake in it
+// stops the job even with keep_going (exit 2), before any face is meshed.
+void check_requested_corners(const ShapeIndex& index, const std::vector<char>& meshed,
+                             const std::map<int, std::vector<int>>& corners,
+                             const std::vector<EdgeNodes>& edges, const std::vector<Vec3>& nodes) {
+  for (const auto& [face, vertices] : corners) {
+    const std::string where = "--corners for face " + std::to_string(face);
+    if (face < 0 || face >= index.face_count()) {
+      throw InputError(where + ": the shape has faces 0.." + std::to_string(index.face_count() - 1));
+    }
+    if (!meshed[face]) throw InputError(where + ": that face is not among the faces to mesh (--faces)");
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+      if (vertices[i] < 0 || vertices[i] >= index.vertex_count()) {
+        throw InputError(where + ": vertex " + std::to_string(vertices[i]) + " does not exist; the shape has vertices 0.." +
+                         std::to_string(index.vertex_count() - 1));
+      }
+      for (std::size_t j = 0; j < i; ++j) {
+        if (vertices[j] == vertices[i]) throw InputError(where + ": vertex " + std::to_string(vertices[i]) + " is given twice");
+      }
+    }
+    FaceBoundary boundary = face_boundary(index, face, edges, nodes);
+    if (is_disk_around_pole(boundary)) boundary = around_pole(boundary, index.face(face), face, nodes);
+    choose_face_corners(boundary, face, vertices, false);  // throws when a vertex is off the wire
+  }
+}
+
 struct FaceOutcome {
   bool ok = false;
   std::string reason;
@@ -57,9 +84,26 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
       outcome.boundary = around_pole(outcome.boundary, index.face(f), f, nodes);
     }
     const auto requested = options.corners.find(f);
-    const std::vector<int> corners = choose_face_corners(
-        outcome.boundary, f, requested == options.corners.end() ? std::vector<int>{} : requested->second);
-    outcome.mesh = mesh_face(index, f, outcome.boundary, corners, nodes, options.templates, options.allow_inverted);
+    const auto choices = corner_choices(outcome.boundary, f,
+                                        requested == options.corners.end() ? std::vector<int>{} : requested->second);
+    // Each corner choice is meshed; the one with fewer inverted quads, then the
+    // higher worst corner, is kept. The last refusal is reported if none meshes.
+    std::optional<FaceMeshResult> best;
+    std::string refusal;
+    for (const std::vector<int>& corners : choices) {
+      try {
+        FaceMeshResult r = mesh_face(index, f, outcome.boundary, corners, nodes, options.templates,
+                                     options.allow_inverted);
+        if (!best || r.inverted < best->inverted ||
+            (r.inverted == best->inverted && r.worst_corner > best->worst_corner)) {
+          best = std::move(r);
+        }
+      } catch (const InputError& e) {
+        refusal = e.what();
+      }
+    }
+    if (!best) throw InputError(refusal);
+    outcome.mesh = std::move(*best);
     outcome.ok = true;
   } catch (const InputError& e) {
     outcome.reason = e.what();
@@ -120,6 +164,8 @@ ShapeMeshResult mesh_shape(const TopoDS_Shape& shape, const ShapeMeshOptions& op
 
   ShapeMesh& mesh = result.mesh;
   const std::vector<EdgeNodes> edges = discretize_edges(index, segments, mesh.nodes);
+
+  check_requested_corners(index, meshed, options.corners, edges, mesh.nodes);
 
   std::vector<FaceOutcome> outcomes(index.face_count());
   run_parallel(index.face_count(), options.threads, [&](int f) {

@@ -9,7 +9,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include "core/input_error.h"
@@ -34,23 +36,75 @@ void require_faces(const TopoDS_Shape& shape, const std::string& what) {
 
 template <typename Reader>
 TopoDS_Shape read_with(Reader& reader, const std::string& path, const char* format) {
-  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
-    throw InputError("cannot read '" + path + "' as " + format);
+  try {
+    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
+      throw InputError("cannot read '" + path + "' as " + format);
+    }
+    if (reader.TransferRoots() == 0) {
+      throw InputError("'" + path + "' holds no shape OpenCASCADE can transfer");
+    }
+    return reader.OneShape();
+  } catch (const InputError&) {
+    throw;
+  } catch (...) {
+    throw InputError("'" + path + "' is damaged: OpenCASCADE could not read it as " + format);
   }
-  if (reader.TransferRoots() == 0) {
-    throw InputError("'" + path + "' holds no shape OpenCASCADE can transfer");
-  }
-  return reader.OneShape();
 }
 
-// BRepTools::Read prints to stdout when the text is not a BREP shape; a BREP starts
-// with "DBRep_DrawableShape" or "CASCADE Topology V..." within its first lines.
-bool looks_like_brep(std::istream& in) {
+// BRepTools::Read prints to stdout when the text is not a BREP shape, and on a file
+// cut short it can throw anything or loop for ever. So the text is checked first: it
+// starts with the topology header within its first lines, and after "TShapes N" come
+// N shape records, each ending with a line that ends in '*', then the root shape
+// reference ("+1 0"). Returns what is wrong, or "".
+std::string brep_problem(std::istream& in) {
   std::string line;
+  bool header = false;
   for (int i = 0; i < 5 && std::getline(in, line); ++i) {
-    if (line.rfind("DBRep_DrawableShape", 0) == 0 || line.rfind("CASCADE Topology V", 0) == 0) return true;
+    if (line.rfind("DBRep_DrawableShape", 0) == 0 || line.rfind("CASCADE Topology V", 0) == 0) {
+      header = true;
+      break;
+    }
   }
-  return false;
+  if (!header) return "is not a BREP file (no topology header)";
+  long long shapes = -1;
+  while (std::getline(in, line)) {
+    if (line.rfind("TShapes ", 0) == 0) {
+      shapes = std::atoll(line.c_str() + 8);
+      break;
+    }
+  }
+  if (shapes < 0) return "is cut short or damaged (no TShapes section)";
+  long long records = 0;
+  std::string last;
+  while (std::getline(in, line)) {
+    while (!line.empty() && (line.back() == ' ' || line.back() == '\r')) line.pop_back();
+    if (line.empty()) continue;
+    if (line.back() == '*') ++records;
+    last = line;
+  }
+  if (records < shapes) {
+    return "is cut short (" + std::to_string(records) + " of " + std::to_string(shapes) + " shapes)";
+  }
+  if (last.empty() || last.back() == '*') return "is cut short (no root shape)";
+  return "";
+}
+
+// Reads BREP text with OpenCASCADE, its stdout silenced and its exceptions turned
+// into InputError.
+TopoDS_Shape read_checked_brep(std::istream& in, const std::string& what) {
+  TopoDS_Shape shape;
+  BRep_Builder builder;
+  std::streambuf* saved = std::cout.rdbuf();
+  std::ostringstream discarded;
+  std::cout.rdbuf(discarded.rdbuf());
+  try {
+    BRepTools::Read(shape, in, builder);
+  } catch (...) {
+    std::cout.rdbuf(saved);
+    throw InputError(what + " is damaged: OpenCASCADE could not read it");
+  }
+  std::cout.rdbuf(saved);
+  return shape;
 }
 
 }  // namespace
@@ -71,12 +125,11 @@ TopoDS_Shape read_shape(const std::string& path) {
     IGESControl_Reader reader;
     shape = read_with(reader, path, "IGES");
   } else if (ext == "brep" || ext == "brp") {
-    std::ifstream header(path);
-    if (!looks_like_brep(header)) throw InputError("'" + path + "' is not a BREP file (no topology header)");
-    BRep_Builder builder;
-    if (!BRepTools::Read(shape, path.c_str(), builder)) {
-      throw InputError("cannot read '" + path + "' as BREP");
-    }
+    std::ifstream check(path);
+    const std::string problem = brep_problem(check);
+    if (!problem.empty()) throw InputError("'" + path + "' " + problem);
+    std::ifstream in(path);
+    shape = read_checked_brep(in, "'" + path + "'");
   } else {
     throw InputError("'" + path + "': unknown shape format (use .step, .stp, .iges, .igs, .brep)");
   }
@@ -85,12 +138,11 @@ TopoDS_Shape read_shape(const std::string& path) {
 }
 
 TopoDS_Shape read_brep_text(const std::string& brep) {
-  std::istringstream header(brep);
-  if (!looks_like_brep(header)) throw InputError("the text is not a BREP shape (no topology header)");
+  std::istringstream check(brep);
+  const std::string problem = brep_problem(check);
+  if (!problem.empty()) throw InputError("the BREP text " + problem);
   std::istringstream in(brep);
-  TopoDS_Shape shape;
-  BRep_Builder builder;
-  BRepTools::Read(shape, in, builder);
+  const TopoDS_Shape shape = read_checked_brep(in, "the BREP text");
   require_faces(shape, "the BREP text");
   return shape;
 }

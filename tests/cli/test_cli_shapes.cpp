@@ -1,0 +1,562 @@
+// The CLI on CAD input: the example shapes of resources/shapes (TQUAD_SHAPES_DIR) meshed
+// to every format, the .json mesh and the --report json object checked against each
+// other and against the shape's topology (closed solids watertight), the CAD options
+// (--faces, --corners, --size, --threads, --keep-going) and the refusals (exit 2, one
+// line on stderr naming what is wrong, nothing on stdout, no output file).
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_test_support.h"
+
+namespace tquad::cli_test {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+std::string shape_file(const std::string& name) { return (fs::path(TQUAD_SHAPES_DIR) / name).string(); }
+
+// The shared real CAD parts live next to the project (/work/shared beside /work/main);
+// TQUAD_SHAPES_DIR is <project>/resources/shapes.
+fs::path shared_cad_file(const std::string& name) {
+  return fs::path(TQUAD_SHAPES_DIR).parent_path().parent_path().parent_path() / "shared" / "data" / "cad" / name;
+}
+
+struct Example {
+  std::string file;
+  int faces;
+  bool closed;    // a closed solid: every mesh edge in exactly two quads
+  int euler;      // V - E + F of the whole mesh (disk 1, annulus 0, sphere-like 2)
+};
+
+void PrintTo(const Example& e, std::ostream* os) { *os << e.file; }
+
+const std::vector<Example>& examples() {
+  static const std::vector<Example> list = {
+      {"plate_with_hole.brep", 4, false, 0},  // four faces around a hole: an annulus
+      {"plate_with_hole.step", 4, false, 0},
+      {"filleted_bracket.brep", 9, true, 2},
+      {"cylinder.brep", 3, true, 2},
+      {"bspline_patch.brep", 1, false, 1},
+  };
+  return list;
+}
+
+// The face indices of the .json mesh file's face records, in record order.
+std::vector<int> face_indices(const json& mesh) {
+  std::vector<int> faces;
+  for (const json& f : mesh.value("faces", json::array())) faces.push_back(f["face"].get<int>());
+  return faces;
+}
+
+// Checks the .json mesh file's structure: indices in range, four distinct nodes per
+// quad, every node used, face records in quad order covering all quads once, no face
+// recorded twice.
+void check_mesh_json(const json& mesh) {
+  ASSERT_TRUE(mesh.contains("nodes") && mesh.contains("quads") && mesh.contains("faces")) << mesh.dump().substr(0, 200);
+  const auto node_count = static_cast<std::int64_t>(mesh["nodes"].size());
+  const auto quad_count = static_cast<std::int64_t>(mesh["quads"].size());
+  EXPECT_GT(quad_count, 0);
+  for (const json& n : mesh["nodes"]) EXPECT_EQ(n.size(), 3u);
+  std::vector<char> used(static_cast<std::size_t>(node_count), 0);
+  for (const json& q : mesh["quads"]) {
+    ASSERT_EQ(q.size(), 4u);
+    std::set<std::int64_t> distinct;
+    for (const json& id : q) {
+      const auto i = id.get<std::int64_t>();
+      ASSERT_GE(i, 0);
+      ASSERT_LT(i, node_count);
+      used[static_cast<std::size_t>(i)] = 1;
+      distinct.insert(i);
+    }
+    EXPECT_EQ(distinct.size(), 4u) << "degenerate quad " << q.dump();
+  }
+  EXPECT_EQ(std::count(used.begin(), used.end(), 0), 0) << "nodes no quad uses";
+  // Face records: contiguous ranges in order, together exactly [0, quads).
+  std::int64_t next = 0;
+  for (const json& f : mesh["faces"]) {
+    const auto first = f["quads"][0].get<std::int64_t>(), count = f["quads"][1].get<std::int64_t>();
+    EXPECT_EQ(first, next) << f.dump();
+    EXPECT_GT(count, 0) << f.dump();
+    EXPECT_FALSE(f["template_tree"].get<std::string>().empty());
+    next = first + count;
+  }
+  EXPECT_EQ(next, quad_count) << "face records do not cover all quads";
+  const std::vector<int> faces = face_indices(mesh);
+  EXPECT_EQ(std::set<int>(faces.begin(), faces.end()).size(), faces.size()) << "a face recorded twice";
+}
+
+// Directed edges (a, b) of all quads, counted.
+std::map<std::pair<std::int64_t, std::int64_t>, int> directed_edges(const json& mesh) {
+  std::map<std::pair<std::int64_t, std::int64_t>, int> edges;
+  for (const json& q : mesh["quads"]) {
+    for (int k = 0; k < 4; ++k) ++edges[{q[k].get<std::int64_t>(), q[(k + 1) % 4].get<std::int64_t>()}];
+  }
+  return edges;
+}
+
+// Undirected edges and how many quads use each.
+std::map<std::pair<std::int64_t, std::int64_t>, int> undirected_edges(const json& mesh) {
+  std::map<std::pair<std::int64_t, std::int64_t>, int> edges;
+  for (const auto& [e, count] : directed_edges(mesh)) edges[std::minmax(e.first, e.second)] += count;
+  return edges;
+}
+
+class ShapeCli : public CliTest {
+ protected:
+  // Runs `tquad mesh INPUT -o OUT` plus extra arguments; expects exit 0.
+  RunResult mesh_ok(const std::string& input, const std::string& output, const std::vector<std::string>& extra = {}) {
+    std::vector<std::string> args = {"mesh", input, "-o", path(output)};
+    args.insert(args.end(), extra.begin(), extra.end());
+    RunResult r = run_tquad(args);
+    EXPECT_EQ(r.exit_status, 0) << r.err;
+    EXPECT_TRUE(fs::exists(path(output))) << output;
+    return r;
+  }
+
+  // Same, with --report json; returns the parsed report.
+  json report_of(const std::string& input, const std::string& output, std::vector<std::string> extra = {}) {
+    extra.insert(extra.end(), {"--report", "json"});
+    const RunResult r = mesh_ok(input, output, extra);
+    if (r.exit_status != 0) return json::object();
+    return json::parse(r.out);
+  }
+
+  // Expects exit 2, one "tquad: error: " line on stderr holding every part, nothing on
+  // stdout and no new file in the folder.
+  void expect_refused(const std::string& input, const std::vector<std::string>& extra,
+                      const std::vector<std::string>& message_parts, const std::string& output = "out.json") {
+    const std::vector<std::string> before = files();
+    std::vector<std::string> args = {"mesh", input, "-o", path(output)};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const RunResult r = run_tquad(args);
+    EXPECT_EQ(r.exit_status, 2) << r.err;
+    ASSERT_FALSE(r.err.empty());
+    EXPECT_EQ(r.err.rfind("tquad: error: ", 0), 0u) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "not one line: " << r.err;
+    for (const std::string& part : message_parts) {
+      EXPECT_NE(r.err.find(part), std::string::npos) << "'" << part << "' not in: " << r.err;
+    }
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_EQ(files(), before) << "a failed run left files behind";
+  }
+
+  json read_json(const std::string& name) const { return json::parse(read_text(path(name))); }
+};
+
+// ---- every example, every format --------------------------------------------------
+
+class ShapeExamples : public ShapeCli, public ::testing::WithParamInterface<Example> {};
+
+TEST_P(ShapeExamples, EveryFormatIsWritten) {
+  const Example& e = GetParam();
+  for (const std::string ext : {"vtu", "inp", "msh", "json"}) {
+    SCOPED_TRACE(ext);
+    const RunResult r = mesh_ok(shape_file(e.file), "mesh." + ext);
+    EXPECT_GT(fs::file_size(path("mesh." + ext)), 0u);
+    // The summary: one face prints its tree, several their count.
+    const std::string summary =
+        e.faces == 1 ? "template tree " : "faces " + std::to_string(e.faces) + " meshed, 0 refused";
+    EXPECT_NE(r.out.find(summary), std::string::npos) << r.out;
+  }
+}
+
+TEST_P(ShapeExamples, JsonMeshIsConsistent) {
+  const Example& e = GetParam();
+  mesh_ok(shape_file(e.file), "mesh.json");
+  ASSERT_FALSE(HasFailure());
+  const json mesh = read_json("mesh.json");
+  check_mesh_json(mesh);
+  ASSERT_FALSE(HasFailure());
+  const std::vector<int> faces = face_indices(mesh);
+  std::vector<int> all(static_cast<std::size_t>(e.faces));
+  for (int k = 0; k < e.faces; ++k) all[static_cast<std::size_t>(k)] = k;
+  EXPECT_EQ(faces, all) << "every face meshed, in face order";
+
+  // Node count: Euler's V - E + F of the shape's surface (faces conform across their
+  // shared edges, so the mesh has the shell's topology).
+  const auto edges = undirected_edges(mesh);
+  const auto v = static_cast<std::int64_t>(mesh["nodes"].size()), f = static_cast<std::int64_t>(mesh["quads"].size());
+  EXPECT_EQ(v - static_cast<std::int64_t>(edges.size()) + f, e.euler);
+
+  // No edge in more than two quads; no directed edge twice (neighbouring quads run
+  // their common edge in opposite directions: consistent orientation).
+  for (const auto& [edge, count] : edges) {
+    ASSERT_LE(count, 2) << "edge " << edge.first << "-" << edge.second;
+    if (e.closed) {
+      ASSERT_EQ(count, 2) << "open edge " << edge.first << "-" << edge.second << " on a closed solid";
+    }
+  }
+  for (const auto& [edge, count] : directed_edges(mesh)) {
+    ASSERT_EQ(count, 1) << "directed edge " << edge.first << "->" << edge.second << " in " << count << " quads";
+  }
+}
+
+TEST_P(ShapeExamples, ReportMatchesTheMeshFile) {
+  const Example& e = GetParam();
+  const json report = report_of(shape_file(e.file), "mesh.json");
+  ASSERT_FALSE(HasFailure());
+  const json mesh = read_json("mesh.json");
+  EXPECT_EQ(report["nodes"], mesh["nodes"].size());
+  EXPECT_EQ(report["quads"], mesh["quads"].size());
+  EXPECT_EQ(report["triangles"], 0);
+  ASSERT_EQ(report["faces"].size(), mesh["faces"].size());
+  for (std::size_t i = 0; i < report["faces"].size(); ++i) {
+    EXPECT_EQ(report["faces"][i]["face"], mesh["faces"][i]["face"]);
+    EXPECT_EQ(report["faces"][i]["template_tree"], mesh["faces"][i]["template_tree"]);
+  }
+  EXPECT_EQ(report["refused_faces"], json::array());
+  EXPECT_EQ(report["quality"]["inverted"], 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, ShapeExamples, ::testing::ValuesIn(examples()),
+                         [](const ::testing::TestParamInfo<Example>& info) {
+                           std::string name = info.param.file;
+                           std::replace(name.begin(), name.end(), '.', '_');
+                           return name;
+                         });
+
+// ---- the report --------------------------------------------------------------------
+
+TEST_F(ShapeCli, ReportHasEveryField) {
+  const json report = report_of(shape_file("filleted_bracket.brep"), "bracket.json");
+  ASSERT_FALSE(HasFailure());
+  for (const char* key : {"nodes", "quads", "triangles", "quality", "faces", "refused_faces", "edge_size",
+                          "changed_edges"}) {
+    EXPECT_TRUE(report.contains(key)) << key << " missing from " << report.dump();
+  }
+  ASSERT_FALSE(HasFailure());
+  EXPECT_GT(report["nodes"].get<long long>(), 0);
+  EXPECT_GT(report["quads"].get<long long>(), 0);
+  EXPECT_EQ(report["triangles"], 0);
+  for (const char* measure : {"lee_lo", "scaled_jacobian"}) {
+    const json& q = report["quality"][measure];
+    for (const char* stat : {"min", "avg", "max", "std"}) EXPECT_TRUE(q[stat].is_number()) << measure << "." << stat;
+    EXPECT_LE(q["min"].get<double>(), q["avg"].get<double>());
+    EXPECT_LE(q["avg"].get<double>(), q["max"].get<double>());
+    EXPECT_GT(q["min"].get<double>(), 0) << measure;
+  }
+  ASSERT_EQ(report["faces"].size(), 9u);
+  for (int k = 0; k < 9; ++k) {
+    const json& f = report["faces"][static_cast<std::size_t>(k)];
+    EXPECT_EQ(f["face"], k);
+    EXPECT_EQ(f["template_tree"].get<std::string>().rfind('T', 0), 0u) << f.dump();
+  }
+  EXPECT_EQ(report["refused_faces"], json::array());
+  // Default size: the bounding-box diagonal / 25 (40 x 30 x 40 box).
+  EXPECT_NEAR(report["edge_size"].get<double>(), std::sqrt(40.0 * 40 + 30 * 30 + 40 * 40) / 25, 1e-6);
+  ASSERT_TRUE(report["changed_edges"].is_array());
+  EXPECT_FALSE(report["changed_edges"].empty()) << "the bracket's faces need parity changes at this size";
+  for (const json& c : report["changed_edges"]) {
+    ASSERT_TRUE(c.contains("edge") && c.contains("from") && c.contains("to")) << c.dump();
+    EXPECT_GE(c["edge"].get<int>(), 0);
+    EXPECT_EQ(std::abs(c["from"].get<int>() - c["to"].get<int>()), 1) << c.dump();
+  }
+}
+
+TEST_F(ShapeCli, ReportEdgeSizeIsTheGivenSize) {
+  const json report = report_of(shape_file("bspline_patch.brep"), "patch.json", {"--size", "7.5"});
+  ASSERT_FALSE(HasFailure());
+  EXPECT_EQ(report["edge_size"], 7.5);
+  // The patch's curved edges round to 14 + 8 + 13 + 8 segments: one count changes.
+  for (const json& c : report["changed_edges"]) {
+    EXPECT_EQ(std::abs(c["from"].get<int>() - c["to"].get<int>()), 1) << c.dump();
+  }
+}
+
+// ---- .inp element sets, meshio -----------------------------------------------------
+
+// Element ids per ELSET=FACE<k> block of an .inp file, counted from the data lines
+// after each *ELEMENT header.
+std::map<int, long long> inp_face_sets(const std::string& text) {
+  std::map<int, long long> sets;
+  std::istringstream in(text);
+  int current = -1;
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line[0] == '*') {
+      current = -1;
+      const auto at = line.find("ELSET=FACE");
+      if (line.rfind("*ELEMENT", 0) == 0 && at != std::string::npos) {
+        current = std::stoi(line.substr(at + 10));
+        EXPECT_EQ(sets.count(current), 0u) << "FACE" << current << " twice";
+        sets[current] = 0;
+      }
+    } else if (current >= 0 && !line.empty()) {
+      ++sets[current];
+    }
+  }
+  return sets;
+}
+
+TEST_F(ShapeCli, InpHasOneElementSetPerFace) {
+  mesh_ok(shape_file("filleted_bracket.brep"), "bracket.json");
+  mesh_ok(shape_file("filleted_bracket.brep"), "bracket.inp");
+  ASSERT_FALSE(HasFailure());
+  const json mesh = read_json("bracket.json");
+  std::map<int, long long> expected;
+  for (const json& f : mesh["faces"]) expected[f["face"].get<int>()] = f["quads"][1].get<long long>();
+  EXPECT_EQ(inp_face_sets(read_text(path("bracket.inp"))), expected);
+}
+
+TEST_F(ShapeCli, InpOfSelectedFacesNamesTheShapeFaceIndices) {
+  mesh_ok(shape_file("plate_with_hole.brep"), "plate.inp", {"--faces", "1,3"});
+  ASSERT_FALSE(HasFailure());
+  const auto sets = inp_face_sets(read_text(path("plate.inp")));
+  ASSERT_EQ(sets.size(), 2u);
+  EXPECT_EQ(sets.count(1), 1u);
+  EXPECT_EQ(sets.count(3), 1u);
+}
+
+// argv: RESULT.json FILE.inp; writes meshio's cell sets (sizes) and cell blocks.
+const char* const meshio_inp_script = R"(
+import json, sys
+import meshio
+m = meshio.read(sys.argv[2])
+json.dump({"points": int(len(m.points)),
+           "cells": [[b.type, int(len(b.data))] for b in m.cells],
+           "cell_sets": {k: int(sum(len(x) for x in v)) for k, v in m.cell_sets.items()}},
+          open(sys.argv[1], "w"))
+)";
+
+TEST_F(ShapeCli, MeshioReadsTheInp) {
+  if (!python_module_available("meshio")) GTEST_SKIP() << "meshio is not importable by " << system_python;
+  const json report = report_of(shape_file("filleted_bracket.brep"), "bracket.inp");
+  ASSERT_FALSE(HasFailure());
+  const RunResult r = run_program(system_python, {"-c", meshio_inp_script, path("result.json"), path("bracket.inp")});
+  ASSERT_EQ(r.exit_status, 0) << r.out << r.err;
+  const json result = read_json("result.json");
+  EXPECT_EQ(result["points"], report["nodes"]);
+  long long quads = 0;
+  for (const json& block : result["cells"]) {
+    EXPECT_EQ(block[0], "quad");
+    quads += block[1].get<long long>();
+  }
+  EXPECT_EQ(quads, report["quads"].get<long long>());
+  EXPECT_EQ(result["cell_sets"]["EALL"], report["quads"]);
+  const json mesh_faces = report["faces"];
+  EXPECT_EQ(result["cell_sets"].size(), mesh_faces.size() + 1) << result["cell_sets"].dump();
+  for (int k = 0; k < 9; ++k) {
+    EXPECT_TRUE(result["cell_sets"].contains("FACE" + std::to_string(k))) << result["cell_sets"].dump();
+  }
+}
+
+// ---- --faces -----------------------------------------------------------------------
+
+TEST_F(ShapeCli, FacesMeshesOnlyThoseFaces) {
+  const json report = report_of(shape_file("plate_with_hole.brep"), "plate.json", {"--faces", "0,2"});
+  ASSERT_FALSE(HasFailure());
+  ASSERT_EQ(report["faces"].size(), 2u);
+  EXPECT_EQ(report["faces"][0]["face"], 0);
+  EXPECT_EQ(report["faces"][1]["face"], 2);
+  EXPECT_EQ(report["refused_faces"], json::array());
+  const json mesh = read_json("plate.json");
+  check_mesh_json(mesh);
+  EXPECT_EQ(face_indices(mesh), (std::vector<int>{0, 2}));
+  EXPECT_EQ(report["nodes"], mesh["nodes"].size());
+  // Faces 0 and 2 are opposite each other around the hole: they share no edge, so
+  // the mesh is two disks (V - E + F = 2).
+  const auto v = static_cast<long long>(mesh["nodes"].size()), f = static_cast<long long>(mesh["quads"].size());
+  EXPECT_EQ(v - static_cast<long long>(undirected_edges(mesh).size()) + f, 2);
+}
+
+TEST_F(ShapeCli, FacesRange) {
+  const json report = report_of(shape_file("filleted_bracket.brep"), "bracket.json", {"--faces", "2-4,7"});
+  ASSERT_FALSE(HasFailure());
+  std::vector<int> faces;
+  for (const json& f : report["faces"]) faces.push_back(f["face"].get<int>());
+  EXPECT_EQ(faces, (std::vector<int>{2, 3, 4, 7}));
+}
+
+TEST_F(ShapeCli, FacesOutOfRangeIsRefused) {
+  expect_refused(shape_file("plate_with_hole.brep"), {"--faces", "99"}, {"face 99", "plate_with_hole.brep"});
+}
+
+TEST_F(ShapeCli, FacesNotAnIndexIsRefused) {
+  expect_refused(shape_file("plate_with_hole.brep"), {"--faces", "x"}, {"--faces", "'x'"});
+  expect_refused(shape_file("plate_with_hole.brep"), {"--faces", "0,,2"}, {"--faces"});
+  expect_refused(shape_file("plate_with_hole.brep"), {"--faces", "3-1"}, {"--faces", "3-1"});
+}
+
+// ---- --corners ---------------------------------------------------------------------
+
+TEST_F(ShapeCli, CornersChosenByTheUser) {
+  // Face 0 of the plate has vertices 0..3; face 1 as a two-curve region (1 and 2).
+  const json report = report_of(shape_file("plate_with_hole.brep"), "plate.json",
+                                {"--corners", "0:0,1,2,3", "--corners", "1:1,2"});
+  ASSERT_FALSE(HasFailure());
+  EXPECT_EQ(report["faces"].size(), 4u);
+  EXPECT_EQ(report["refused_faces"], json::array());
+  check_mesh_json(read_json("plate.json"));
+}
+
+TEST_F(ShapeCli, CornerVertexNotOnTheFaceIsRefused) {
+  // Vertex 5 is on the hole, not on face 0's wire.
+  expect_refused(shape_file("plate_with_hole.brep"), {"--corners", "0:0,1,2,5"}, {"vertex 5", "face 0"});
+}
+
+TEST_F(ShapeCli, MalformedCornersAreRefused) {
+  expect_refused(shape_file("plate_with_hole.brep"), {"--corners", "3"}, {"--corners", "'3'"});
+  expect_refused(shape_file("plate_with_hole.brep"), {"--corners", "0:0,a"}, {"--corners", "'a'"});
+  expect_refused(shape_file("plate_with_hole.brep"), {"--corners", "0:0"}, {"face 0", "1 vertices"});
+  expect_refused(shape_file("plate_with_hole.brep"), {"--corners", "0:0,1", "--corners", "0:2,3"},
+                 {"face 0", "twice"});
+}
+
+// Not yet: corners for a face the shape does not have are ignored (exit 0), which
+// DESIGN.md's "never silent" rules out. Enable when the CLI checks the face index.
+TEST_F(ShapeCli, CornersForAMissingFaceAreRefused) {
+  expect_refused(shape_file("plate_with_hole.brep"), {"--corners", "99:0,1"}, {"face 99"});
+}
+
+// ---- --size, --threads -------------------------------------------------------------
+
+TEST_F(ShapeCli, SizeMustBePositive) {
+  expect_refused(shape_file("bspline_patch.brep"), {"--size", "0"}, {"--size"});
+  expect_refused(shape_file("bspline_patch.brep"), {"--size", "-1"}, {"--size"});
+  expect_refused(shape_file("bspline_patch.brep"), {"--size=-0.5"}, {"--size"});
+  expect_refused(shape_file("bspline_patch.brep"), {"--size", "abc"}, {"--size"});
+}
+
+TEST_F(ShapeCli, SmallerSizeGivesMoreQuads) {
+  const json coarse = report_of(shape_file("bspline_patch.brep"), "coarse.json", {"--size", "10"});
+  const json fine = report_of(shape_file("bspline_patch.brep"), "fine.json", {"--size", "5"});
+  ASSERT_FALSE(HasFailure());
+  // About area / size^2: halving the size gives about four times the quads.
+  const double ratio = fine["quads"].get<double>() / coarse["quads"].get<double>();
+  EXPECT_GT(ratio, 3.0);
+  EXPECT_LT(ratio, 5.0);
+}
+
+TEST_F(ShapeCli, ThreadCountDoesNotChangeTheOutput) {
+  for (const std::string name : {"filleted_bracket.brep", "cylinder.brep", "plate_with_hole.step"}) {
+    SCOPED_TRACE(name);
+    mesh_ok(shape_file(name), "one.json", {"--threads", "1"});
+    mesh_ok(shape_file(name), "two.json", {"--threads", "2"});
+    ASSERT_FALSE(HasFailure());
+    const std::string one = read_text(path("one.json")), two = read_text(path("two.json"));
+    EXPECT_FALSE(one.empty());
+    EXPECT_TRUE(one == two) << "--threads 1 and --threads 2 wrote different files";
+  }
+}
+
+TEST_F(ShapeCli, StepAndBrepOfTheSamePlateMeshAlike) {
+  const json brep = report_of(shape_file("plate_with_hole.brep"), "brep.json");
+  const json step = report_of(shape_file("plate_with_hole.step"), "step.json");
+  ASSERT_FALSE(HasFailure());
+  EXPECT_EQ(brep["nodes"], step["nodes"]);
+  EXPECT_EQ(brep["quads"], step["quads"]);
+  EXPECT_EQ(brep["faces"], step["faces"]);
+}
+
+// ---- unreadable input, wrong output ------------------------------------------------
+
+TEST_F(ShapeCli, GarbageStepIsRefused) {
+  write_text(dir_ / "garbage.step", "this is not a STEP file\nat all\n");
+  expect_refused(path("garbage.step"), {}, {"garbage.step"});
+}
+
+TEST_F(ShapeCli, GarbageBrepIsRefused) {
+  write_text(dir_ / "garbage.brep", "this is not a BREP file\n1 2 3\n");
+  expect_refused(path("garbage.brep"), {}, {"garbage.brep"});
+}
+
+// A real header and the first third of a real file. (At other cut points OCCT's
+// BRepTools::Read loops forever or throws a non-std exception: see the disabled test
+// below.)
+TEST_F(ShapeCli, TruncatedBrepIsRefused) {
+  const std::string text = read_text(shape_file("bspline_patch.brep"));
+  write_text(dir_ / "cut.brep", text.substr(0, text.size() / 3));
+  const std::vector<std::string> before = files();
+  const RunResult r = run_tquad({"mesh", path("cut.brep"), "-o", path("out.json")});
+  EXPECT_EQ(r.exit_status, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("tquad: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("cut.brep"), std::string::npos) << r.err;
+  EXPECT_EQ(files(), before);
+}
+
+// Not yet: a BREP cut short anywhere must give exit 2 with stdout empty. Today
+// BRepTools::Read prints "Not a surface table" etc. on stdout (std::cout, not the
+// Message printers main() clears), spins forever on some cut points (e.g. 40% of
+// plate_with_hole.brep) and throws a non-std exception on others (exit 1, "unknown
+// exception"). Each run is under `timeout` so a hang fails the test instead of
+// blocking the suite.
+TEST_F(ShapeCli, BrepCutShortAnywhereIsRefused) {
+  if (!program_on_path("timeout")) GTEST_SKIP() << "no timeout(1)";
+  for (const std::string name : {"plate_with_hole.brep", "cylinder.brep", "filleted_bracket.brep"}) {
+    const std::string text = read_text(shape_file(name));
+    for (int percent = 10; percent < 100; percent += 10) {
+      SCOPED_TRACE(name + " cut at " + std::to_string(percent) + "%");
+      write_text(dir_ / "cut.brep", text.substr(0, text.size() * percent / 100));
+      const RunResult r =
+          run_program("timeout", {"10", TQUAD_EXE, "mesh", path("cut.brep"), "-o", path("out.json")});
+      EXPECT_EQ(r.exit_status, 2) << r.err;
+      EXPECT_TRUE(r.out.empty()) << r.out;
+      EXPECT_FALSE(std::filesystem::exists(path("out.json")));
+    }
+  }
+}
+
+TEST_F(ShapeCli, MissingShapeFileIsRefused) {
+  expect_refused(path("nowhere.step"), {}, {"nowhere.step"});
+}
+
+TEST_F(ShapeCli, SvgOutputIsRefusedForCadInput) {
+  expect_refused(shape_file("bspline_patch.brep"), {}, {"SVG"}, "patch.svg");
+}
+
+// ---- --keep-going on a real part ---------------------------------------------------
+
+class KeepGoing : public ShapeCli {
+ protected:
+  void SetUp() override {
+    ShapeCli::SetUp();
+    part_ = shared_cad_file("t20_data.step");
+    if (!fs::exists(part_)) GTEST_SKIP() << "shared CAD part " << part_ << " is absent";
+  }
+  fs::path part_;
+};
+
+TEST_F(KeepGoing, WithoutItAHoledFaceStopsTheJob) {
+  // Face 0 of the part has a hole; faces with holes are not meshed yet.
+  expect_refused(part_.string(), {}, {"face 0", "inner wire", "--keep-going"});
+}
+
+TEST_F(KeepGoing, WithItTheOtherFacesAreMeshedAndFace0Listed) {
+  const RunResult r = run_tquad({"mesh", part_.string(), "-o", path("part.json"), "--keep-going", "--report", "json"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json report = json::parse(r.out);
+  ASSERT_TRUE(report["refused_faces"].is_array());
+  ASSERT_FALSE(report["refused_faces"].empty());
+  const json& first = report["refused_faces"][0];
+  EXPECT_EQ(first["face"], 0);
+  EXPECT_NE(first["reason"].get<std::string>().find("inner wire"), std::string::npos) << first.dump();
+  std::set<int> refused;
+  for (const json& f : report["refused_faces"]) {
+    EXPECT_FALSE(f["reason"].get<std::string>().empty()) << f.dump();
+    refused.insert(f["face"].get<int>());
+  }
+  // Every refused face is warned about on stderr; no meshed face is also refused.
+  EXPECT_NE(r.err.find("warning: refused face 0"), std::string::npos) << r.err;
+  const json mesh = json::parse(read_text(path("part.json")));
+  check_mesh_json(mesh);
+  const std::vector<int> meshed = face_indices(mesh);
+  EXPECT_FALSE(meshed.empty());
+  for (int f : meshed) EXPECT_EQ(refused.count(f), 0u) << "face " << f << " both meshed and refused";
+  EXPECT_EQ(report["faces"].size(), meshed.size());
+  EXPECT_EQ(report["quads"], mesh["quads"].size());
+}
+
+}  // namespace
+}  // namespace tquad::cli_test
