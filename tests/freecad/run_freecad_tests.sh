@@ -50,7 +50,7 @@ tally() {
   fi
 }
 
-common_env=(FREECAD_USER_HOME="$home" TQ_TEST_DIR="$here")
+common_env=(FREECAD_USER_HOME="$home" TQ_TEST_DIR="$here" TQ_CLI="${TQ_CLI:-$repo/build/bin/tquad}")
 
 for test_module in test_headless test_fem_plate; do
   echo "=== $test_module (freecadcmd) ==="

@@ -94,6 +94,34 @@ class MeshObjectTest(unittest.TestCase):
                         f"quality summary: {mesh_obj.Quality}")
         self.assertEqual(mesh_obj.Proxy.last_error, "", "error after a good mesh")
 
+    def test_mesh_equals_the_cli_on_the_same_shape(self):
+        """The FEM mesh is node for node and quad for quad the `tquad mesh` CLI's."""
+        import json
+        import subprocess
+        from freecad.templatequad import make_mesh
+        cli = os.environ.get("TQ_CLI", "")
+        if not os.path.exists(cli):
+            self.skipTest(f"no tquad executable at TQ_CLI={cli!r}")
+        part = self._part(self._filleted_box(), "FilletedBoxCli")
+        mesh = make_mesh(self.doc, part, size=3.0)
+        with tempfile.TemporaryDirectory() as folder:
+            brep, out = os.path.join(folder, "part.brep"), os.path.join(folder, "mesh.json")
+            part.Shape.exportBrep(brep)
+            run = subprocess.run([cli, "mesh", brep, "-o", out, "--size", "3.0"],
+                                 capture_output=True, text=True)
+            self.assertEqual(run.returncode, 0, f"tquad mesh failed: {run.stderr}")
+            with open(out) as f:
+                reference = json.load(f)
+        femmesh = mesh.FemMesh
+        self.assertEqual(femmesh.NodeCount, len(reference["nodes"]), "node count vs the CLI")
+        self.assertEqual(femmesh.FaceCount, len(reference["quads"]), "quad count vs the CLI")
+        for i, (x, y, z) in enumerate(reference["nodes"], start=1):
+            p = femmesh.getNodeById(i)
+            self.assertEqual((p.x, p.y, p.z), (x, y, z), f"node {i} differs from the CLI's")
+        for j, quad in enumerate(reference["quads"], start=1):
+            self.assertEqual(list(femmesh.getElementNodes(j)), [n + 1 for n in quad],
+                             f"quad {j} differs from the CLI's")
+
     def test_box_is_all_quads_and_equals_tquad(self):
         from freecad.templatequad import make_mesh
         part = self._part(Part.makeBox(10, 20, 30), "Box")
