@@ -9,6 +9,8 @@
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepTools.hxx>
+#include <IGESControl_Controller.hxx>
+#include <IGESControl_Writer.hxx>
 #include <BRepBndLib.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
@@ -170,6 +172,22 @@ TEST(ShapeMeshing, PolesAndSeams) {
   // A whole sphere has no edge but its seam and two poles: refused, with a reason.
   r = check_primitive(BRepPrimAPI_MakeSphere(10.0).Shape(), "sphere");
   EXPECT_EQ(r.refused, 1);
+}
+
+TEST(ShapeMeshing, IgesInput) {
+  // The bracket written as IGES (BRep mode, which keeps faces and shared edges) reads
+  // back and meshes every face.
+  const TopoDS_Shape bracket = read_shape(std::string(TQUAD_SOURCE_DIR) + "/resources/shapes/filleted_bracket.brep");
+  const std::string path = (fs::temp_directory_path() / "bracket.igs").string();
+  IGESControl_Controller::Init();
+  IGESControl_Writer writer("MM", 1);  // 1: BRep mode
+  ASSERT_TRUE(writer.AddShape(bracket));
+  writer.ComputeModel();
+  ASSERT_TRUE(writer.Write(path.c_str()));
+  const FileReport r = check_file(path);
+  fs::remove(path);
+  EXPECT_EQ(r.faces, 9);
+  EXPECT_EQ(r.refused, 0);
 }
 
 TEST(ShapeMeshing, ExampleShapes) { check_folder(fs::path(TQUAD_SOURCE_DIR) / "resources" / "shapes"); }
