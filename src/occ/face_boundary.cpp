@@ -124,20 +124,30 @@ bool runs_counter_clockwise(const FaceBoundary& b, const TopoDS_Face& face) {
   return (signed_uv_area(b.uv) > 0) == (face.Orientation() != TopAbs_REVERSED);
 }
 
-FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::vector<EdgeNodes>& edges,
-                           const std::vector<Vec3>& nodes) {
-  const TopoDS_Face& face = index.face(face_index);
-  const TopoDS_Wire outer = BRepTools::OuterWire(face);
-  FaceBoundary b;
-  for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) {
-    if (!w.Current().IsSame(outer)) ++b.inner_wires;
-  }
+namespace {
+
+// One wire walked in order: its edges' shared nodes (each edge's last node is the next
+// one's first, so it is left out), their (u, v) from the pcurves, and per edge
+// occurrence where it starts. Degenerate edges add no node.
+struct WireWalk {
+  std::vector<NodeId> nodes;
+  std::vector<Vec3> uv;
   struct Occurrence {
     TopoDS_Edge edge;
     double first_param, last_param;  // in travel order
+    int start;                       // loop position of its first node
+    NodeId start_node;
+    bool seam;
   };
   std::vector<Occurrence> occurrences;
-  for (BRepTools_WireExplorer it(outer, face); it.More(); it.Next()) {
+  bool has_degenerate_edge = false;
+  double pole_v = 0;  // v of the first degenerate edge
+};
+
+WireWalk walk_wire(const TopoDS_Wire& wire, const TopoDS_Face& face, int face_index, const ShapeIndex& index,
+                   const std::vector<EdgeNodes>& edges) {
+  WireWalk w;
+  for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next()) {
     const TopoDS_Edge& occurrence = it.Current();
     const int e = index.edge_index(occurrence);
     const EdgeNodes& en = edges[e];
@@ -145,23 +155,49 @@ FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::v
     const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(occurrence, face, f, l);
     if (pcurve.IsNull()) throw std::runtime_error("edge " + std::to_string(e) + " has no pcurve on face " + std::to_string(face_index));
     if (en.degenerate) {
-      if (!b.has_degenerate_edge) b.pole_v = pcurve->Value(0.5 * (f + l)).Y();
-      b.has_degenerate_edge = true;
+      if (!w.has_degenerate_edge) w.pole_v = pcurve->Value(0.5 * (f + l)).Y();
+      w.has_degenerate_edge = true;
       continue;
     }
     const bool reversed = occurrence.Orientation() == TopAbs_REVERSED;
     const int n = static_cast<int>(en.nodes.size()) - 1;
-    b.edge_start.push_back(static_cast<int>(b.nodes.size()));
-    b.start_vertex.push_back(en.nodes[reversed ? n : 0]);
-    b.is_seam.push_back(BRep_Tool::IsClosed(occurrence, face));
-    for (int k = 0; k < n; ++k) {  // the last node is the next edge's first
+    w.occurrences.push_back({occurrence, reversed ? en.params[n] : en.params[0], reversed ? en.params[0] : en.params[n],
+                             static_cast<int>(w.nodes.size()), en.nodes[reversed ? n : 0],
+                             BRep_Tool::IsClosed(occurrence, face)});
+    for (int k = 0; k < n; ++k) {
       const int i = reversed ? n - k : k;
-      b.nodes.push_back(en.nodes[i]);
+      w.nodes.push_back(en.nodes[i]);
       const gp_Pnt2d p = pcurve->Value(en.params[i]);
-      b.uv.push_back({p.X(), p.Y(), 0.0});
+      w.uv.push_back({p.X(), p.Y(), 0.0});
     }
-    occurrences.push_back({occurrence, reversed ? en.params[n] : en.params[0], reversed ? en.params[0] : en.params[n]});
   }
+  return w;
+}
+
+}  // namespace
+
+FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::vector<EdgeNodes>& edges,
+                           const std::vector<Vec3>& nodes) {
+  const TopoDS_Face& face = index.face(face_index);
+  const TopoDS_Wire outer = BRepTools::OuterWire(face);
+  FaceBoundary b;
+  for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) {
+    if (w.Current().IsSame(outer)) continue;
+    ++b.inner_wires;
+    const WireWalk hole = walk_wire(TopoDS::Wire(w.Current()), face, face_index, index, edges);
+    b.holes.push_back({hole.nodes, hole.uv});
+  }
+  const WireWalk walk = walk_wire(outer, face, face_index, index, edges);
+  b.nodes = walk.nodes;
+  b.uv = walk.uv;
+  b.has_degenerate_edge = walk.has_degenerate_edge;
+  b.pole_v = walk.pole_v;
+  for (const WireWalk::Occurrence& o : walk.occurrences) {
+    b.edge_start.push_back(o.start);
+    b.start_vertex.push_back(o.start_node);
+    b.is_seam.push_back(o.seam);
+  }
+  const auto& occurrences = walk.occurrences;
   b.arc_length.assign(1, 0.0);
   for (std::size_t i = 0; i < b.nodes.size(); ++i) {
     b.arc_length.push_back(b.arc_length.back() + distance(nodes[b.nodes[i]], nodes[b.nodes[(i + 1) % b.nodes.size()]]));
@@ -171,8 +207,8 @@ FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::v
   const int count = static_cast<int>(occurrences.size());
   double total = 0;
   for (int k = 0; k < count; ++k) {
-    const Occurrence& in = occurrences[(k + count - 1) % count];
-    const Occurrence& out = occurrences[k];
+    const WireWalk::Occurrence& in = occurrences[(k + count - 1) % count];
+    const WireWalk::Occurrence& out = occurrences[k];
     const Vec3 a = travel_tangent(in.edge, in.last_param), c = travel_tangent(out.edge, out.first_param);
     const Vec3& uv = b.uv[b.edge_start[k]];
     const double angle = std::atan2(dot(cross(a, c), face_normal(face, uv.x, uv.y)), dot(a, c));

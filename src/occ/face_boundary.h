@@ -20,6 +20,12 @@ struct PolarMap {
   double u_ref = 0, period = 1, pole_v = 0, radius = 1, side = 1;
 };
 
+// A closed loop of shared nodes with their (u, v): an inner wire (a hole's rim).
+struct NodeLoop {
+  std::vector<NodeId> nodes;
+  std::vector<Vec3> uv;
+};
+
 struct FaceBoundary {
   std::vector<NodeId> nodes;   // around the outer wire; the loop closes on itself
   std::vector<Vec3> uv;        // (u, v, 0) of each loop node
@@ -29,6 +35,7 @@ struct FaceBoundary {
   std::vector<double> turn;         // signed turning angle there (radians, > 0 convex)
   std::vector<double> arc_length;   // 3D length along the loop to each node (size + 1)
   int inner_wires = 0;
+  std::vector<NodeLoop> holes;      // the inner wires, each walked like the outer one
   bool has_degenerate_edge = false;
   double pole_v = 0;                // v of the (first) degenerate edge, if any
   std::optional<PolarMap> polar;    // set by around_pole: uv then holds polar (x, y)

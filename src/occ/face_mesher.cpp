@@ -12,6 +12,7 @@
 #include "core/input_error.h"
 #include "core/planar_self_intersection.h"
 #include "core/quality.h"
+#include "occ/face_with_hole.h"
 
 namespace tquad {
 
@@ -36,39 +37,6 @@ void take_quads(const QuadMesh& mesh, bool reverse, FaceMeshResult& out) {
 // `param` holds the mesh's own coordinates: (u, v), or polar (x, y) around a pole,
 // where a quad's centre is taken before going back to (u, v) (a quad across the seam
 // has corners at u near 0 and near the period).
-// Counts the quads with a corner inverted against the face's outer normal at the
-// quad's centre, and stores the lowest scaled Jacobian in out.worst_corner.
-void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
-                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
-                      FaceMeshResult& out) {
-  const std::vector<Quad>& quads = out.quads;
-  const BRepAdaptor_Surface surface(face);
-  long long inverted = 0;
-  double worst = 1.0;
-  for (const Quad& q : quads) {
-    Vec3 centre;
-    for (NodeId n : q) centre += 0.25 * param[n];
-    if (polar) centre = polar_to_uv(*polar, centre);
-    gp_Pnt p;
-    gp_Vec du, dv;
-    surface.D1(centre.x, centre.y, p, du, dv);
-    gp_Vec outer = du.Crossed(dv);
-    if (face.Orientation() == TopAbs_REVERSED) outer.Reverse();
-    const Vec3 normal{outer.X(), outer.Y(), outer.Z()};
-    bool bad = false;
-    for (int i = 0; i < 4; ++i) {
-      const Vec3 a = xyz[q[(i + 1) % 4]] - xyz[q[i]], b = xyz[q[(i + 3) % 4]] - xyz[q[i]];
-      const double scale = norm(a) * norm(b) * norm(normal);
-      const double jacobian = scale > 0 ? dot(cross(a, b), normal) / scale : -1.0;
-      worst = std::min(worst, jacobian);
-      bad = bad || jacobian < -kInvertedBelow;
-    }
-    inverted += bad ? 1 : 0;
-  }
-  out.inverted = inverted;
-  out.worst_corner = worst;
-}
-
 // Local positions and parameters: the loop's nodes, then the interior ones.
 std::vector<Vec3> local_positions(const FaceBoundary& b, const std::vector<Vec3>& nodes,
                                   const std::vector<Vec3>& interior) {
@@ -84,6 +52,7 @@ FaceMeshResult mesh_in_parameter_space(const TopoDS_Face& face, const FaceBounda
   const auto start = std::chrono::steady_clock::now();
   const QuadMesh uv_mesh = mesh_boundary(BoundaryLoop{b.uv, corners}, options);
   FaceMeshResult out;
+  out.boundary_nodes = b.nodes;
   take_quads(uv_mesh, !runs_counter_clockwise(b, face), out);
   out.template_seconds = seconds_since(start);
   const auto placing = std::chrono::steady_clock::now();
@@ -115,6 +84,7 @@ FaceMeshResult mesh_in_space(const TopoDS_Face& face, const FaceBoundary& b, con
   const auto start = std::chrono::steady_clock::now();
   const QuadMesh mesh = mesh_boundary(BoundaryLoop{loop, corners}, options);
   FaceMeshResult out;
+  out.boundary_nodes = b.nodes;
   out.used_projection = true;
   out.template_seconds = seconds_since(start);
   const auto placing = std::chrono::steady_clock::now();
@@ -163,14 +133,56 @@ std::string corner_text(const FaceBoundary& b, const std::vector<int>& corners) 
 
 }  // namespace
 
+void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
+                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
+                      FaceMeshResult& out) {
+  const std::vector<Quad>& quads = out.quads;
+  const BRepAdaptor_Surface surface(face);
+  long long inverted = 0;
+  double worst = 1.0;
+  for (const Quad& q : quads) {
+    Vec3 centre;
+    for (NodeId n : q) centre += 0.25 * param[n];
+    if (polar) centre = polar_to_uv(*polar, centre);
+    gp_Pnt p;
+    gp_Vec du, dv;
+    surface.D1(centre.x, centre.y, p, du, dv);
+    gp_Vec outer = du.Crossed(dv);
+    if (face.Orientation() == TopAbs_REVERSED) outer.Reverse();
+    const Vec3 normal{outer.X(), outer.Y(), outer.Z()};
+    bool bad = false;
+    for (int i = 0; i < 4; ++i) {
+      const Vec3 a = xyz[q[(i + 1) % 4]] - xyz[q[i]], b = xyz[q[(i + 3) % 4]] - xyz[q[i]];
+      const double scale = norm(a) * norm(b) * norm(normal);
+      const double jacobian = scale > 0 ? dot(cross(a, b), normal) / scale : -1.0;
+      worst = std::min(worst, jacobian);
+      bad = bad || jacobian < -kInvertedBelow;
+    }
+    inverted += bad ? 1 : 0;
+  }
+  out.inverted = inverted;
+  out.worst_corner = worst;
+}
+
 FaceMeshResult mesh_face(const ShapeIndex& index, int face_index, const FaceBoundary& boundary,
                          const std::vector<int>& corners, const std::vector<Vec3>& nodes,
-                         const MeshOptions& options, bool allow_inverted) {
+                         const MeshOptions& options, bool allow_inverted, double edge_size) {
   const TopoDS_Face& face = index.face(face_index);
   const std::string name = "face " + std::to_string(face_index);
-  if (boundary.inner_wires > 0) {
+  if (boundary.inner_wires > 1) {
     throw InputError(name + " has " + std::to_string(boundary.inner_wires) +
-                     " inner wire(s) (holes); faces with holes are not supported yet");
+                     " inner wires (holes); faces with more than one hole are not supported yet");
+  }
+  if (boundary.inner_wires == 1) {
+    if (boundary.has_degenerate_edge || boundary.polar) {
+      throw InputError(name + " has a hole and a pole; not supported yet");
+    }
+    FaceMeshResult holed = mesh_face_with_hole(face, face_index, boundary, nodes, edge_size, options);
+    if (holed.inverted > 0 && !allow_inverted) {
+      throw InputError(name + " (with a hole): " + std::to_string(holed.inverted) +
+                       " quads stay inverted after repair");
+    }
+    return holed;
   }
   if (boundary.nodes.size() < 4) {
     throw InputError(name + " has only " + std::to_string(boundary.nodes.size()) +

@@ -8,6 +8,7 @@
 // node is projected onto the surface, warm-started from the previous node's (u, v).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,7 +19,9 @@
 namespace tquad {
 
 struct FaceMeshResult {
-  // Local node numbering: i < loop size is boundary.nodes[i], else interior[i - size].
+  // Local node numbering: i < boundary_nodes.size() is boundary_nodes[i] (a shared
+  // node: the outer loop, then a hole's rim), else interior[i - size].
+  std::vector<NodeId> boundary_nodes;
   std::vector<Quad> quads;
   std::vector<Vec3> interior;
   std::string template_tree;
@@ -29,11 +32,19 @@ struct FaceMeshResult {
   double placement_seconds = 0;  // putting its interior nodes on the surface
 };
 
+// Counts the quads with a corner inverted against the face's outer normal at the
+// quad's centre, and the lowest scaled Jacobian, into out.inverted / out.worst_corner.
+// param: each local node's mesh coordinates, (u, v) or polar (x, y) when `polar`;
+// xyz: each local node's position.
+void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
+                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
+                      FaceMeshResult& out);
+
 // Quads come counter-clockwise around the face's outer normal. Throws InputError with
 // the reason when neither route meshes the face, or when quads stay inverted after
 // repair and allow_inverted is false (never a silent bad mesh).
 FaceMeshResult mesh_face(const ShapeIndex& index, int face, const FaceBoundary& boundary,
                          const std::vector<int>& corners, const std::vector<Vec3>& nodes,
-                         const MeshOptions& options, bool allow_inverted);
+                         const MeshOptions& options, bool allow_inverted, double edge_size);
 
 }  // namespace tquad

@@ -63,6 +63,9 @@ void check_requested_corners(const ShapeIndex& index, const std::vector<char>& m
       }
     }
     FaceBoundary boundary = face_boundary(index, face, edges, nodes);
+    if (boundary.inner_wires > 0) {
+      throw InputError(where + ": a face with a hole takes its corners from the cut through the hole");
+    }
     if (is_disk_around_pole(boundary)) boundary = around_pole(boundary, index.face(face), face, nodes);
     choose_face_corners(boundary, face, vertices, false);  // throws when a vertex is off the wire
   }
@@ -76,7 +79,7 @@ struct FaceOutcome {
 };
 
 FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<EdgeNodes>& edges,
-                          const std::vector<Vec3>& nodes, const ShapeMeshOptions& options) {
+                          const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size) {
   FaceOutcome outcome;
   try {
     outcome.boundary = face_boundary(index, f, edges, nodes);
@@ -93,7 +96,7 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
     for (const std::vector<int>& corners : choices) {
       try {
         FaceMeshResult r = mesh_face(index, f, outcome.boundary, corners, nodes, options.templates,
-                                     options.allow_inverted);
+                                     options.allow_inverted, size);
         if (!best || r.inverted < best->inverted ||
             (r.inverted == best->inverted && r.worst_corner > best->worst_corner)) {
           best = std::move(r);
@@ -169,7 +172,7 @@ ShapeMeshResult mesh_shape(const TopoDS_Shape& shape, const ShapeMeshOptions& op
 
   std::vector<FaceOutcome> outcomes(index.face_count());
   run_parallel(index.face_count(), options.threads, [&](int f) {
-    if (meshed[f]) outcomes[f] = mesh_one_face(index, f, edges, mesh.nodes, options);
+    if (meshed[f]) outcomes[f] = mesh_one_face(index, f, edges, mesh.nodes, options, result.size);
   });
 
   for (int f = 0; f < index.face_count(); ++f) {
@@ -187,13 +190,14 @@ ShapeMeshResult mesh_shape(const TopoDS_Shape& shape, const ShapeMeshOptions& op
   for (int f = 0; f < index.face_count(); ++f) {
     if (!meshed[f] || !outcomes[f].ok) continue;
     const FaceOutcome& o = outcomes[f];
-    const NodeId loop_size = static_cast<NodeId>(o.boundary.nodes.size());
+    const std::vector<NodeId>& shared = o.mesh.boundary_nodes;
+    const NodeId loop_size = static_cast<NodeId>(shared.size());
     const NodeId base = static_cast<NodeId>(mesh.nodes.size());
     mesh.nodes.insert(mesh.nodes.end(), o.mesh.interior.begin(), o.mesh.interior.end());
     const auto first = static_cast<std::int64_t>(mesh.quads.size());
     for (const Quad& q : o.mesh.quads) {
       Quad g;
-      for (int k = 0; k < 4; ++k) g[k] = q[k] < loop_size ? o.boundary.nodes[q[k]] : base + (q[k] - loop_size);
+      for (int k = 0; k < 4; ++k) g[k] = q[k] < loop_size ? shared[q[k]] : base + (q[k] - loop_size);
       mesh.quads.push_back(g);
     }
     mesh.faces.push_back({f, o.mesh.template_tree, first, static_cast<std::int64_t>(o.mesh.quads.size())});

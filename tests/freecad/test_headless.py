@@ -199,8 +199,9 @@ class MeshObjectTest(unittest.TestCase):
 
     def test_refused_face_is_reported_and_keep_going_meshes_the_rest(self):
         from freecad.templatequad import make_mesh
-        holed = Part.makePlane(100, 60).cut(
-            Part.makeCylinder(10, 1, FreeCAD.Vector(50, 30, -0.5)))  # a face with a hole
+        holed = Part.makePlane(100, 60).cut(Part.makeCompound([  # a face with two holes
+            Part.makeCylinder(8, 1, FreeCAD.Vector(25, 30, -0.5)),
+            Part.makeCylinder(8, 1, FreeCAD.Vector(75, 30, -0.5))]))
         square = Part.makePlane(20, 20, FreeCAD.Vector(200, 0, 0))
         part = self._part(Part.makeCompound(holed.Faces + [square]), "HoledAndSquare")
         with self.assertRaises(ValueError, msg="a refused face without KeepGoing") as caught:
