@@ -1,11 +1,11 @@
 """End-to-end FEM: a plate with a hole in tension, meshed by TemplateQuad, solved by
 CalculiX through FreeCAD's ccxtools, checked against the textbook stress concentration.
 
-Model (units mm, N, MPa): resources/shapes/plate_with_hole.brep, a 100 x 60 plate with
-a central hole of diameter d = 20, as four four-sided faces (a face with a hole is
-refused by the mesher, so the plate is cut along the diagonals from the hole to the
-corners). Shell thickness t = 1, steel, the x = 0 edge fixed, a force F along +x on the
-x = 100 edge.
+Model (units mm, N, MPa): a 100 x 60 plate with a central hole of diameter d = 20, both
+as resources/shapes/plate_with_hole.brep (four four-sided faces, cut along the
+diagonals from the hole to the corners) and as one face with a hole (which the mesher
+cuts in two itself). Shell thickness t = 1, steel, the x = 0 edge fixed, a force F
+along +x on the x = 100 edge.
 
 Check: the peak von Mises stress on the hole edge over the nominal net-section stress
 F / ((W - d) t) is Heywood's Kt_net = 2 + (1 - d/W)^3 = 2.296 for d/W = 1/3, within 10%.
@@ -47,17 +47,14 @@ class PlateWithHoleTest(unittest.TestCase):
         FreeCAD.closeDocument(self.doc.Name)
         shutil.rmtree(self.work_dir, ignore_errors=True)
 
-    def _analysis(self):
+    def _analysis(self, shape):
         """Plate, analysis, solver, thickness, material, constraints, TemplateQuad mesh."""
         import ObjectsFem
         from freecad.templatequad import make_mesh
 
-        shape = Part.Shape()
-        shape.read(PLATE_BREP)
         plate = self.doc.addObject("Part::Feature", "Plate")
         plate.Shape = shape
         self.doc.recompute()
-        self.assertEqual(len(plate.Shape.Faces), 4, "the plate is four faces")
         left = _edge_name(plate, lambda e: e.BoundBox.XMax < 1e-6)
         right = _edge_name(plate, lambda e: e.BoundBox.XMin > 100 - 1e-6)
         bottom = _edge_name(plate, lambda e: e.BoundBox.YMax < 1e-6)
@@ -92,9 +89,21 @@ class PlateWithHoleTest(unittest.TestCase):
         return analysis, solver, mesh
 
     def test_stress_concentration_at_the_hole(self):
+        shape = Part.Shape()
+        shape.read(PLATE_BREP)
+        self.assertEqual(len(shape.Faces), 4, "the plate is four faces")
+        self._check_stress_concentration(shape, "four faces")
+
+    def test_stress_concentration_one_face_with_a_hole(self):
+        hole = Part.makeCylinder(HOLE_D / 2, 1, FreeCAD.Vector(*HOLE_CENTRE, -0.5))
+        shape = Part.makePlane(100, WIDTH).cut(hole)
+        self.assertEqual(len(shape.Faces), 1, "the plate is one face")
+        self._check_stress_concentration(shape, "one face with a hole")
+
+    def _check_stress_concentration(self, shape, label):
         from femtools import ccxtools
 
-        analysis, solver, mesh = self._analysis()
+        analysis, solver, mesh = self._analysis(shape)
         self.assertEqual(mesh.FemMesh.QuadrangleCount, mesh.FemMesh.FaceCount, "all quads")
 
         fea = ccxtools.FemToolsCcx(analysis, solver)
@@ -120,7 +129,7 @@ class PlateWithHoleTest(unittest.TestCase):
         self.assertGreater(len(on_hole), 20, "nodes on the hole edge")
         nominal = FORCE / ((WIDTH - HOLE_D) * THICKNESS)
         kt = max(on_hole) / nominal
-        print(f"\nplate with hole: {mesh.FemMesh.FaceCount} quads (size {MESH_SIZE} mm); "
+        print(f"\nplate with hole, {label}: {mesh.FemMesh.FaceCount} quads (size {MESH_SIZE} mm); "
               f"peak von Mises at the hole {max(on_hole):.2f} MPa, nominal net stress "
               f"{nominal:.2f} MPa, Kt measured {kt:.3f}, Heywood {KT_HEYWOOD:.3f}, "
               f"ratio {kt / KT_HEYWOOD:.3f}")
