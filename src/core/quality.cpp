@@ -6,10 +6,6 @@
 
 namespace tquad {
 
-std::array<Vec3, 4> quad_points(const QuadMesh& mesh, const Quad& q) {
-  return {mesh.nodes[q[0]], mesh.nodes[q[1]], mesh.nodes[q[2]], mesh.nodes[q[3]]};
-}
-
 double lee_lo_quality(const std::array<Vec3, 4>& p, const Vec3& normal) {
   std::array<double, 4> alpha;
   for (int i = 0; i < 4; ++i) {

@@ -43,6 +43,5 @@ QualitySummary summarize_quality(const QuadMesh& mesh, const std::optional<Vec3>
 QualitySummary summarize_quality(const std::vector<Vec3>& nodes, const std::vector<Quad>& quads,
                                  const std::optional<Vec3>& reference);
 
-std::array<Vec3, 4> quad_points(const QuadMesh& mesh, const Quad& q);
 
 }  // namespace tquad

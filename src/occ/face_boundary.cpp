@@ -205,7 +205,6 @@ FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::v
   // Turning angle at each edge start: from the previous occurrence's end tangent to
   // this one's start tangent, signed by the face normal there.
   const int count = static_cast<int>(occurrences.size());
-  double total = 0;
   for (int k = 0; k < count; ++k) {
     const WireWalk::Occurrence& in = occurrences[(k + count - 1) % count];
     const WireWalk::Occurrence& out = occurrences[k];
@@ -213,9 +212,7 @@ FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::v
     const Vec3& uv = b.uv[b.edge_start[k]];
     const double angle = std::atan2(dot(cross(a, c), face_normal(face, uv.x, uv.y)), dot(a, c));
     b.turn.push_back(angle);
-    total += angle;
   }
-  (void)total;
   // Convex corners turn left around the outer normal when the loop runs
   // counter-clockwise around it: counter-clockwise in (u, v) for a FORWARD face,
   // clockwise for a REVERSED one. Otherwise the signs are flipped.

@@ -87,8 +87,10 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
       outcome.boundary = around_pole(outcome.boundary, index.face(f), f, nodes);
     }
     const auto requested = options.corners.find(f);
-    const auto choices = corner_choices(outcome.boundary, f,
-                                        requested == options.corners.end() ? std::vector<int>{} : requested->second);
+    // A face with a hole takes its corners from the cut through the hole: one try.
+    auto choices = corner_choices(outcome.boundary, f,
+                                  requested == options.corners.end() ? std::vector<int>{} : requested->second);
+    if (outcome.boundary.inner_wires > 0) choices.resize(1);
     // Each corner choice is meshed; the one with fewer inverted quads, then the
     // higher worst corner, is kept. The last refusal is reported if none meshes.
     std::optional<FaceMeshResult> best;
