@@ -2,22 +2,9 @@
 
 #include <vector>
 
+#include "core/curve_geometry.h"
+
 namespace tquad {
-
-namespace {
-
-// Normalized arc-length parameter of each node of a polyline.
-std::vector<double> arc_params(const std::vector<NodeId>& ids, const std::vector<Vec3>& nodes) {
-  std::vector<double> t(ids.size(), 0.0);
-  for (std::size_t i = 1; i < ids.size(); ++i) {
-    t[i] = t[i - 1] + distance(nodes[ids[i - 1]], nodes[ids[i]]);
-  }
-  const double total = t.back();
-  for (double& x : t) x = total > 0 ? x / total : 0.0;
-  return t;
-}
-
-}  // namespace
 
 void mesh_mapped_grid(const Region& region, MeshBuilder& builder) {
   const auto& bottom = region.curves[0];  // i = 0..n at j = 0
@@ -28,10 +15,8 @@ void mesh_mapped_grid(const Region& region, MeshBuilder& builder) {
   const int m = static_cast<int>(right.size()) - 1;
   std::vector<Vec3>& nodes = builder.nodes();
 
-  const std::vector<double> tb = arc_params(bottom, nodes);
-  const std::vector<double> tr = arc_params(right, nodes);
-  const std::vector<double> ttop = arc_params(top, nodes);
-  const std::vector<double> tleft = arc_params(left, nodes);
+  // Normalized arc-length parameters of each side's nodes.
+  const CurveGeometry tb(bottom, nodes), tr(right, nodes), ttop(top, nodes), tleft(left, nodes);
   const Vec3 p00 = nodes[bottom[0]], p10 = nodes[right[0]], p11 = nodes[top[0]],
              p01 = nodes[left[0]];
 
@@ -44,10 +29,10 @@ void mesh_mapped_grid(const Region& region, MeshBuilder& builder) {
     } else {
       row[0] = left[m - j];
       row[n] = right[j];
-      const double vl = 1.0 - tleft[m - j], vr = tr[j];
+      const double vl = 1.0 - tleft.param(m - j), vr = tr.param(j);
       const Vec3 L = nodes[left[m - j]], R = nodes[right[j]];
       for (int i = 1; i < n; ++i) {
-        const double ub = tb[i], ut = 1.0 - ttop[n - i];
+        const double ub = tb.param(i), ut = 1.0 - ttop.param(n - i);
         // Intersection of u = ub + v (ut - ub) with v = vl + u (vr - vl).
         const double u = (ub + vl * (ut - ub)) / (1.0 - (ut - ub) * (vr - vl));
         const double v = vl + u * (vr - vl);

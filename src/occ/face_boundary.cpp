@@ -46,6 +46,15 @@ Vec3 face_normal(const TopoDS_Face& face, double u, double v) {
   return length > 0 ? (1.0 / length) * n : n;
 }
 
+// 3D length along a closed loop of nodes to each node (size + 1 entries).
+std::vector<double> loop_arc_lengths(const std::vector<NodeId>& loop, const std::vector<Vec3>& nodes) {
+  std::vector<double> arc{0.0};
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    arc.push_back(arc.back() + distance(nodes[loop[i]], nodes[loop[(i + 1) % loop.size()]]));
+  }
+  return arc;
+}
+
 }  // namespace
 
 double signed_uv_area(const std::vector<Vec3>& uv) {
@@ -111,12 +120,7 @@ FaceBoundary around_pole(const FaceBoundary& b, const TopoDS_Face& face, int fac
     out.uv.push_back({r * std::cos(theta), -m.side * r * std::sin(theta), 0.0});
   }
   out.polar = m;
-  // 3D lengths along the kept loop, for the corner choice.
-  out.arc_length.assign(1, 0.0);
-  for (std::size_t i = 0; i < out.nodes.size(); ++i) {
-    const NodeId next = out.nodes[(i + 1) % out.nodes.size()];
-    out.arc_length.push_back(out.arc_length.back() + distance(nodes[out.nodes[i]], nodes[next]));
-  }
+  out.arc_length = loop_arc_lengths(out.nodes, nodes);  // for the corner choice
   return out;
 }
 
@@ -198,10 +202,7 @@ FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::v
     b.is_seam.push_back(o.seam);
   }
   const auto& occurrences = walk.occurrences;
-  b.arc_length.assign(1, 0.0);
-  for (std::size_t i = 0; i < b.nodes.size(); ++i) {
-    b.arc_length.push_back(b.arc_length.back() + distance(nodes[b.nodes[i]], nodes[b.nodes[(i + 1) % b.nodes.size()]]));
-  }
+  b.arc_length = loop_arc_lengths(b.nodes, nodes);
   // Turning angle at each edge start: from the previous occurrence's end tangent to
   // this one's start tangent, signed by the face normal there.
   const int count = static_cast<int>(occurrences.size());

@@ -12,7 +12,6 @@
 #include "core/input_error.h"
 #include "core/planar_self_intersection.h"
 #include "core/quality.h"
-#include "occ/face_with_hole.h"
 
 namespace tquad {
 
@@ -120,17 +119,6 @@ FaceMeshResult mesh_in_space(const TopoDS_Face& face, const FaceBoundary& b, con
   return out;
 }
 
-// "at vertices 3, 7, 8, 12" (or loop positions where no vertex starts).
-std::string corner_text(const FaceBoundary& b, const std::vector<int>& corners) {
-  std::string text = "at vertices";
-  for (std::size_t i = 0; i < corners.size(); ++i) {
-    const auto it = std::find(b.edge_start.begin(), b.edge_start.end(), corners[i]);
-    text += (i ? ", " : " ") + (it == b.edge_start.end() ? "node " + std::to_string(b.nodes[corners[i]])
-                                                          : std::to_string(b.start_vertex[it - b.edge_start.begin()]));
-  }
-  return text;
-}
-
 }  // namespace
 
 void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
@@ -166,24 +154,9 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
 
 FaceMeshResult mesh_face(const ShapeIndex& index, int face_index, const FaceBoundary& boundary,
                          const std::vector<int>& corners, const std::vector<Vec3>& nodes,
-                         const MeshOptions& options, bool allow_inverted, double edge_size) {
+                         const MeshOptions& options) {
   const TopoDS_Face& face = index.face(face_index);
   const std::string name = "face " + std::to_string(face_index);
-  if (boundary.inner_wires > 1) {
-    throw InputError(name + " has " + std::to_string(boundary.inner_wires) +
-                     " inner wires (holes); faces with more than one hole are not supported yet");
-  }
-  if (boundary.inner_wires == 1) {
-    if (boundary.has_degenerate_edge || boundary.polar) {
-      throw InputError(name + " has a hole and a pole; not supported yet");
-    }
-    FaceMeshResult holed = mesh_face_with_hole(face, face_index, boundary, nodes, edge_size, options);
-    if (holed.inverted > 0 && !allow_inverted) {
-      throw InputError(name + " (with a hole): " + std::to_string(holed.inverted) +
-                       " quads stay inverted after repair");
-    }
-    return holed;
-  }
   if (boundary.nodes.size() < 4) {
     throw InputError(name + " has only " + std::to_string(boundary.nodes.size()) +
                      " boundary segments; use a smaller --size");
@@ -209,12 +182,17 @@ FaceMeshResult mesh_face(const ShapeIndex& index, int face_index, const FaceBoun
       if (!best) throw InputError(name + " cannot be meshed: in (u, v): " + uv_problem + "; in 3D: " + e.what());
     }
   }
-  if (best->inverted > 0 && !allow_inverted) {
-    throw InputError(name + ": " + std::to_string(best->inverted) +
-                     " quads stay inverted after repair (the face is not convex enough for its "
-                     "corners " + corner_text(boundary, corners) + "; try --corners)");
-  }
   return *best;
+}
+
+std::string corner_text(const FaceBoundary& b, const std::vector<int>& corners) {
+  std::string text = "at vertices";
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const auto it = std::find(b.edge_start.begin(), b.edge_start.end(), corners[i]);
+    text += (i ? ", " : " ") + (it == b.edge_start.end() ? "node " + std::to_string(b.nodes[corners[i]])
+                                                          : std::to_string(b.start_vertex[it - b.edge_start.begin()]));
+  }
+  return text;
 }
 
 }  // namespace tquad

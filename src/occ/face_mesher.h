@@ -41,10 +41,13 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
                       FaceMeshResult& out);
 
 // Quads come counter-clockwise around the face's outer normal. Throws InputError with
-// the reason when neither route meshes the face, or when quads stay inverted after
-// repair and allow_inverted is false (never a silent bad mesh).
+// the reason when neither route meshes the face; a mesh with inverted quads is
+// returned (counted in `inverted`) for the caller to weigh against other corners.
 FaceMeshResult mesh_face(const ShapeIndex& index, int face, const FaceBoundary& boundary,
                          const std::vector<int>& corners, const std::vector<Vec3>& nodes,
-                         const MeshOptions& options, bool allow_inverted, double edge_size);
+                         const MeshOptions& options);
+
+// "at vertices 3, 7, 8, 12" (or "node n" for a corner where no wire edge starts).
+std::string corner_text(const FaceBoundary& boundary, const std::vector<int>& corners);
 
 }  // namespace tquad

@@ -195,10 +195,14 @@ class HoleSplitter {
 
 }  // namespace
 
-FaceMeshResult mesh_face_with_hole(const TopoDS_Face& face, int /*face_index*/, const FaceBoundary& boundary,
+FaceMeshResult mesh_face_with_hole(const TopoDS_Face& face, int face_index, const FaceBoundary& boundary,
                                    const std::vector<Vec3>& nodes, double edge_size,
                                    const MeshOptions& options) {
-  return HoleSplitter(face, boundary, nodes, edge_size).best_mesh(options);
+  try {
+    return HoleSplitter(face, boundary, nodes, edge_size).best_mesh(options);
+  } catch (const InputError& e) {
+    throw InputError("face " + std::to_string(face_index) + " (with a hole): " + e.what());
+  }
 }
 
 }  // namespace tquad

@@ -15,6 +15,7 @@
 #include "occ/face_boundary.h"
 #include "occ/face_corners.h"
 #include "occ/face_mesher.h"
+#include "occ/face_with_hole.h"
 #include "occ/shape_index.h"
 
 namespace tquad {
@@ -78,6 +79,47 @@ struct FaceOutcome {
   FaceMeshResult mesh;
 };
 
+// The face's mesh: a face with one hole is cut in two through it; any other face is
+// meshed with each of its corner choices, and the one with fewer inverted quads, then
+// the higher worst corner, is kept. Inverted quads that remain refuse the face unless
+// allow_inverted (never a silent bad mesh).
+FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary& boundary,
+                              const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size) {
+  const std::string name = "face " + std::to_string(f);
+  if (boundary.inner_wires > 1) {
+    throw InputError(name + " has " + std::to_string(boundary.inner_wires) +
+                     " inner wires (holes); faces with more than one hole are not supported yet");
+  }
+  std::optional<FaceMeshResult> best;
+  std::string inverted_where, refusal;
+  if (boundary.inner_wires == 1) {
+    if (boundary.has_degenerate_edge || boundary.polar) throw InputError(name + " has a hole and a pole; not supported yet");
+    best = mesh_face_with_hole(index.face(f), f, boundary, nodes, size, options.templates);
+    inverted_where = " (with a hole)";
+  } else {
+    const auto requested = options.corners.find(f);
+    for (const std::vector<int>& corners :
+         corner_choices(boundary, f, requested == options.corners.end() ? std::vector<int>{} : requested->second)) {
+      try {
+        FaceMeshResult r = mesh_face(index, f, boundary, corners, nodes, options.templates);
+        if (!best || r.inverted < best->inverted ||
+            (r.inverted == best->inverted && r.worst_corner > best->worst_corner)) {
+          best = std::move(r);
+          inverted_where = " (the face is not convex enough for its corners " + corner_text(boundary, corners) +
+                           "; try --corners)";
+        }
+      } catch (const InputError& e) {
+        refusal = e.what();
+      }
+    }
+    if (!best) throw InputError(refusal);
+  }
+  if (best->inverted > 0 && !options.allow_inverted) {
+    throw InputError(name + ": " + std::to_string(best->inverted) + " quads stay inverted after repair" + inverted_where);
+  }
+  return std::move(*best);
+}
+
 FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<EdgeNodes>& edges,
                           const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size) {
   FaceOutcome outcome;
@@ -86,29 +128,7 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
     if (is_disk_around_pole(outcome.boundary)) {
       outcome.boundary = around_pole(outcome.boundary, index.face(f), f, nodes);
     }
-    const auto requested = options.corners.find(f);
-    // A face with a hole takes its corners from the cut through the hole: one try.
-    auto choices = corner_choices(outcome.boundary, f,
-                                  requested == options.corners.end() ? std::vector<int>{} : requested->second);
-    if (outcome.boundary.inner_wires > 0) choices.resize(1);
-    // Each corner choice is meshed; the one with fewer inverted quads, then the
-    // higher worst corner, is kept. The last refusal is reported if none meshes.
-    std::optional<FaceMeshResult> best;
-    std::string refusal;
-    for (const std::vector<int>& corners : choices) {
-      try {
-        FaceMeshResult r = mesh_face(index, f, outcome.boundary, corners, nodes, options.templates,
-                                     options.allow_inverted, size);
-        if (!best || r.inverted < best->inverted ||
-            (r.inverted == best->inverted && r.worst_corner > best->worst_corner)) {
-          best = std::move(r);
-        }
-      } catch (const InputError& e) {
-        refusal = e.what();
-      }
-    }
-    if (!best) throw InputError(refusal);
-    outcome.mesh = std::move(*best);
+    outcome.mesh = best_face_mesh(index, f, outcome.boundary, nodes, options, size);
     outcome.ok = true;
   } catch (const InputError& e) {
     outcome.reason = e.what();

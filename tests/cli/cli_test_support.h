@@ -62,6 +62,12 @@ class CliTest : public ::testing::Test {
                             const std::vector<int>& corners) const;
   // Files in the folder (to check that a failed run wrote nothing).
   std::vector<std::string> files() const;
+  // Runs `tquad mesh INPUT -o OUTPUT` plus extra arguments and expects a refusal:
+  // exit 2, one "tquad: error: " line on stderr holding every part, nothing on stdout
+  // and no new file in the folder.
+  void expect_refused(const std::string& input, const std::vector<std::string>& extra,
+                      const std::vector<std::string>& message_parts,
+                      const std::string& output = "out.json") const;
 
   std::filesystem::path dir_;
 };

@@ -17,24 +17,6 @@ class BadInput : public CliTest {
   std::vector<Vec3> square(const std::vector<int>& counts, std::vector<int>& corners) const {
     return straight_loop({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, counts, corners);
   }
-
-  // Runs `tquad mesh INPUT -o OUT.json` plus extra arguments and checks the refusal.
-  void expect_refused(const std::string& input, const std::vector<std::string>& extra,
-                      const std::vector<std::string>& message_parts, const std::string& output = "out.json") {
-    const std::vector<std::string> before = files();
-    std::vector<std::string> args = {"mesh", input, "-o", path(output)};
-    args.insert(args.end(), extra.begin(), extra.end());
-    const RunResult r = run_tquad(args);
-    EXPECT_EQ(r.exit_status, 2) << r.err;
-    EXPECT_EQ(r.err.rfind("tquad: error: ", 0), 0u) << r.err;
-    ASSERT_FALSE(r.err.empty());
-    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "not one line: " << r.err;
-    for (const std::string& part : message_parts) {
-      EXPECT_NE(r.err.find(part), std::string::npos) << "'" << part << "' not in: " << r.err;
-    }
-    EXPECT_TRUE(r.out.empty()) << r.out;
-    EXPECT_EQ(files(), before) << "a failed run left files behind";
-  }
 };
 
 TEST_F(BadInput, OddTotalSegmentCount) {

@@ -134,25 +134,6 @@ class ShapeCli : public CliTest {
     return json::parse(r.out);
   }
 
-  // Expects exit 2, one "tquad: error: " line on stderr holding every part, nothing on
-  // stdout and no new file in the folder.
-  void expect_refused(const std::string& input, const std::vector<std::string>& extra,
-                      const std::vector<std::string>& message_parts, const std::string& output = "out.json") {
-    const std::vector<std::string> before = files();
-    std::vector<std::string> args = {"mesh", input, "-o", path(output)};
-    args.insert(args.end(), extra.begin(), extra.end());
-    const RunResult r = run_tquad(args);
-    EXPECT_EQ(r.exit_status, 2) << r.err;
-    ASSERT_FALSE(r.err.empty());
-    EXPECT_EQ(r.err.rfind("tquad: error: ", 0), 0u) << r.err;
-    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "not one line: " << r.err;
-    for (const std::string& part : message_parts) {
-      EXPECT_NE(r.err.find(part), std::string::npos) << "'" << part << "' not in: " << r.err;
-    }
-    EXPECT_TRUE(r.out.empty()) << r.out;
-    EXPECT_EQ(files(), before) << "a failed run left files behind";
-  }
-
   json read_json(const std::string& name) const { return json::parse(read_text(path(name))); }
 };
 

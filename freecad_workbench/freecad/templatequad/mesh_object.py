@@ -20,6 +20,7 @@ Outputs (read-only, group "TemplateQuad results"):
 """
 import FreeCAD
 
+from .stateless_proxy import StatelessProxy
 from . import meshing
 
 GROUP = "TemplateQuad"
@@ -63,7 +64,7 @@ def add_properties(obj) -> None:
             obj.addProperty(prop_type, name, RESULT_GROUP, doc, _OUTPUT)
 
 
-class TemplateQuadMesh:
+class TemplateQuadMesh(StatelessProxy):
     """Proxy of a Fem::FemMeshObjectPython that meshes obj.Part with tquad."""
 
     #: Read by FEM's femutils.type_of_obj; must not start with "Fem::" (those are FEM's).
@@ -129,16 +130,3 @@ class TemplateQuadMesh:
         obj.RefusedFaces = []
         obj.Quality = ""
 
-    # The proxy keeps no state worth saving; these make FreeCAD save nothing for it
-    # (Python 3.11 gives every object a default __getstate__ that would save last_error).
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
-        return None

@@ -7,13 +7,14 @@ the element edges (what one wants to see of a quad mesh).
 import FreeCAD
 import FreeCADGui
 
+from .stateless_proxy import StatelessProxy
 from . import paths
 
 #: ViewProviderFemMesh's display mode with shaded faces and element edges.
 DISPLAY_MODE = "Faces & Wireframe"
 
 
-class ViewProviderTemplateQuadMesh:
+class ViewProviderTemplateQuadMesh(StatelessProxy):
     """Proxy for the view object of a TemplateQuad mesh."""
 
     def __init__(self, vobj):
@@ -51,15 +52,3 @@ class ViewProviderTemplateQuadMesh:
             gui_doc.setEdit(vobj.Object.Name)
         return True
 
-    # Nothing to save (see mesh_object.TemplateQuadMesh for why these are here).
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
-        return None
