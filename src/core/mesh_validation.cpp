@@ -29,7 +29,18 @@ std::string check_quads(const QuadMesh& mesh) {
   return "";
 }
 
-std::string check_edges(const QuadMesh& mesh, int boundary_points) {
+// Loop l holds boundary nodes [start[l], start[l+1]); its segments run i -> i+1 and
+// last -> first.
+bool is_boundary_segment(NodeId a, NodeId b, const std::vector<int>& start) {
+  for (std::size_t l = 0; l + 1 < start.size(); ++l) {
+    if (a < start[l] || a >= start[l + 1]) continue;
+    return b == (a + 1 < start[l + 1] ? a + 1 : start[l]);
+  }
+  return false;
+}
+
+std::string check_edges(const QuadMesh& mesh, const std::vector<int>& start) {
+  const int boundary_points = start.back();
   std::vector<std::uint64_t> directed;
   directed.reserve(mesh.quads.size() * 4);
   for (const Quad& q : mesh.quads) {
@@ -45,8 +56,7 @@ std::string check_edges(const QuadMesh& mesh, int boundary_points) {
   for (std::uint64_t e : directed) {
     const auto a = static_cast<NodeId>(e >> 32), b = static_cast<NodeId>(e & 0xffffffffu);
     if (std::binary_search(directed.begin(), directed.end(), edge_key(b, a))) continue;
-    const bool boundary_segment = a < boundary_points && b == (a + 1) % boundary_points;
-    if (!boundary_segment) {
+    if (!is_boundary_segment(a, b, start)) {
       return "edge " + std::to_string(a) + "-" + std::to_string(b) +
              " belongs to one quad only but is not a boundary segment (the mesh has a hole or a crack)";
     }
@@ -80,15 +90,23 @@ std::string check_nodes(const QuadMesh& mesh) {
 }  // namespace
 
 std::string check_disk_mesh(const QuadMesh& mesh, int boundary_points) {
+  return check_domain_mesh(mesh, {boundary_points});
+}
+
+std::string check_domain_mesh(const QuadMesh& mesh, const std::vector<int>& loop_sizes) {
+  std::vector<int> start{0};
+  for (int size : loop_sizes) start.push_back(start.back() + size);
+  const int boundary_points = start.back();
+  const int holes = static_cast<int>(loop_sizes.size()) - 1;
   std::string problem = check_quads(mesh);
-  if (problem.empty()) problem = check_edges(mesh, boundary_points);
+  if (problem.empty()) problem = check_edges(mesh, start);
   if (problem.empty()) problem = check_nodes(mesh);
   if (problem.empty()) {
-    const long long expected = 1 + static_cast<long long>(mesh.quads.size()) + boundary_points / 2;
+    const long long expected = 1 + static_cast<long long>(mesh.quads.size()) + boundary_points / 2 - holes;
     if (static_cast<long long>(mesh.nodes.size()) != expected) {
-      problem = "the mesh has " + std::to_string(mesh.nodes.size()) + " nodes; a disk of " +
-                std::to_string(mesh.quads.size()) + " quads and " + std::to_string(boundary_points) +
-                " boundary edges has " + std::to_string(expected);
+      problem = "the mesh has " + std::to_string(mesh.nodes.size()) + " nodes; a domain with " +
+                std::to_string(holes) + " holes, " + std::to_string(mesh.quads.size()) + " quads and " +
+                std::to_string(boundary_points) + " boundary edges has " + std::to_string(expected);
     }
   }
   return problem;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/quad_mesh.h"
 
@@ -18,5 +19,10 @@ namespace tquad {
 //   - every node used; no two nodes at the same position;
 //   - V = 1 + F + E/2 (Euler's formula for a disk of quads).
 std::string check_disk_mesh(const QuadMesh& mesh, int boundary_points);
+
+// The same for a domain with holes: the first nodes are the loops one after the other
+// (loop_sizes[0] outer points, then each hole's), and
+// V = 1 + F + E/2 - holes.
+std::string check_domain_mesh(const QuadMesh& mesh, const std::vector<int>& loop_sizes);
 
 }  // namespace tquad

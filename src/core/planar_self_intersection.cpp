@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/input_error.h"
+#include "core/planar_predicates.h"
 
 namespace tquad {
 
@@ -42,29 +43,7 @@ bool planar_normal(const std::vector<Vec3>& p, Vec3& unit_normal) {
 
 namespace {
 
-struct Point2 {
-  double x, y;
-};
-
-double orient(const Point2& a, const Point2& b, const Point2& c) {
-  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-}
-
-bool on_segment(const Point2& a, const Point2& b, const Point2& p) {
-  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-         p.y <= std::max(a.y, b.y);
-}
-
-// Closed segments [a,b] and [c,d] share at least one point.
-bool segments_meet(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
-  const double d1 = orient(c, d, a), d2 = orient(c, d, b);
-  const double d3 = orient(a, b, c), d4 = orient(a, b, d);
-  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) {
-    return true;
-  }
-  return (d1 == 0 && on_segment(c, d, a)) || (d2 == 0 && on_segment(c, d, b)) ||
-         (d3 == 0 && on_segment(a, b, c)) || (d4 == 0 && on_segment(a, b, d));
-}
+using Point2 = Vec3;  // projected on the loop's plane, z = 0
 
 [[noreturn]] void report_crossing(int i, int j, int n) {
   throw InputError("boundary crosses itself: segment " + std::to_string(i) + " (points " +
@@ -97,7 +76,7 @@ bool project_if_planar(const std::vector<Vec3>& p, std::vector<Point2>& out) {
   e1 = (1.0 / norm(e1)) * e1;
   const Vec3 e2 = cross(normal, e1);
   out.resize(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) out[i] = {dot(p[i], e1), dot(p[i], e2)};
+  for (std::size_t i = 0; i < p.size(); ++i) out[i] = {dot(p[i], e1), dot(p[i], e2), 0.0};
   return true;
 }
 
@@ -108,7 +87,7 @@ void check_fold_backs(const std::vector<Point2>& q) {
     const Point2& b = q[i];
     const Point2& c = q[(i + 1) % n];
     const double along = (b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y);
-    if (orient(a, b, c) == 0 && along < 0) {
+    if (orient2d(a, b, c) == 0 && along < 0) {
       throw InputError("boundary folds back on itself at point " + std::to_string(i));
     }
   }

@@ -7,6 +7,7 @@
 #include <TopExp.hxx>
 #include <TopoDS.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -18,6 +19,30 @@ Vec3 to_vec3(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
 TopoDS_Edge forward(const TopoDS_Edge& e) { return TopoDS::Edge(e.Oriented(TopAbs_FORWARD)); }
 
+// A segment stands for at most this much of a curve's turning, so that no quad cuts
+// across the surface it stands for: a full circle gets at least 8 segments, a
+// semicircle 4 (Gmsh's default is at least 7 points per circle).
+constexpr double kMaxSegmentTurn = M_PI / 4;
+
+// Total turning of the curve's tangent (radians), from 64 samples.
+double tangent_turn(const BRepAdaptor_Curve& curve) {
+  constexpr int kSamples = 64;
+  const double t0 = curve.FirstParameter(), t1 = curve.LastParameter();
+  double turn = 0;
+  gp_Vec previous;
+  bool have_previous = false;
+  for (int i = 0; i <= kSamples; ++i) {
+    gp_Pnt p;
+    gp_Vec d;
+    curve.D1(t0 + (t1 - t0) * i / kSamples, p, d);
+    if (d.Magnitude() <= gp::Resolution()) continue;
+    if (have_previous) turn += previous.Angle(d);
+    previous = d;
+    have_previous = true;
+  }
+  return turn;
+}
+
 }  // namespace
 
 std::vector<int> edge_segment_counts(const ShapeIndex& index, double size, std::vector<double>& lengths) {
@@ -28,7 +53,8 @@ std::vector<int> edge_segment_counts(const ShapeIndex& index, double size, std::
     if (BRep_Tool::Degenerated(edge)) continue;
     const BRepAdaptor_Curve curve(edge);
     lengths[e] = GCPnts_AbscissaPoint::Length(curve);
-    segments[e] = std::max(1, static_cast<int>(std::lround(lengths[e] / size)));
+    const int by_turn = static_cast<int>(std::ceil(tangent_turn(curve) / kMaxSegmentTurn - 1e-9));
+    segments[e] = std::max({1, by_turn, static_cast<int>(std::lround(lengths[e] / size))});
   }
   return segments;
 }

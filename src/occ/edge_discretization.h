@@ -17,8 +17,8 @@ struct EdgeNodes {
   std::vector<NodeId> nodes;   // node ids along the edge's FORWARD orientation
 };
 
-// Segments of each edge from the target size: round(length / size), at least 1;
-// degenerate edges get 0.
+// Segments of each edge from the target size: round(length / size), at least 1 and
+// at least one per 45 degrees of the curve's turning; degenerate edges get 0.
 std::vector<int> edge_segment_counts(const ShapeIndex& index, double size,
                                      std::vector<double>& lengths);
 

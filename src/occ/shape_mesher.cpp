@@ -14,6 +14,7 @@
 #include "occ/edge_discretization.h"
 #include "occ/face_boundary.h"
 #include "occ/face_corners.h"
+#include "occ/face_decomposed.h"
 #include "occ/face_mesher.h"
 #include "occ/face_with_hole.h"
 #include "occ/shape_index.h"
@@ -79,43 +80,65 @@ struct FaceOutcome {
   FaceMeshResult mesh;
 };
 
-// The face's mesh: a face with one hole is cut in two through it; any other face is
-// meshed with each of its corner choices, and the one with fewer inverted quads, then
-// the higher worst corner, is kept. Inverted quads that remain refuse the face unless
+// Whether mesh a beats mesh b: fewer inverted quads, then a better worst corner.
+bool better(const FaceMeshResult& a, const FaceMeshResult& b) {
+  return a.inverted < b.inverted || (a.inverted == b.inverted && a.worst_corner > b.worst_corner);
+}
+
+// A face meshed whole (templates on its own corners, or the one-hole O-grid) whose
+// worst corner reaches this keeps that mesh; below it, the face decomposition is
+// tried too and the better mesh kept.
+constexpr double kGoodEnoughCorner = 0.3;
+
+// The face's mesh, the one place where the algorithm per face is chosen:
+//   - no hole: the templates on each corner choice (face_corners.h);
+//   - one hole: the O-grid cut through it (face_with_hole.h);
+//   - more holes, or when the above leave inverted quads or a worst corner under
+//     kGoodEnoughCorner: the face decomposition (face_decomposed.h), any outline;
+//   - a disk around a pole: polar templates (no decomposition).
+// The best mesh is kept; inverted quads that remain refuse the face unless
 // allow_inverted (never a silent bad mesh).
 FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary& boundary,
                               const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size) {
   const std::string name = "face " + std::to_string(f);
-  if (boundary.inner_wires > 1) {
-    throw InputError(name + " has " + std::to_string(boundary.inner_wires) +
-                     " inner wires (holes); faces with more than one hole are not supported yet");
-  }
   std::optional<FaceMeshResult> best;
-  std::string inverted_where, refusal;
+  std::string refusal;
+  const bool pole = boundary.has_degenerate_edge || boundary.polar;
+  if (boundary.inner_wires > 0 && pole) throw InputError(name + " has a hole and a pole; not supported yet");
+  bool decompose = !pole;
+  auto keep = [&](FaceMeshResult&& r) {
+    if (!best || better(r, *best)) best = std::move(r);
+  };
   if (boundary.inner_wires == 1) {
-    if (boundary.has_degenerate_edge || boundary.polar) throw InputError(name + " has a hole and a pole; not supported yet");
-    best = mesh_face_with_hole(index.face(f), f, boundary, nodes, size, options.templates);
-    inverted_where = " (with a hole)";
-  } else {
+    try {
+      keep(mesh_face_with_hole(index.face(f), f, boundary, nodes, size, options.templates));
+    } catch (const std::exception& e) {  // the decomposition below is the other route
+      refusal = e.what();
+    }
+  } else if (boundary.inner_wires == 0) {
     const auto requested = options.corners.find(f);
+    const bool user_corners = requested != options.corners.end();
     for (const std::vector<int>& corners :
-         corner_choices(boundary, f, requested == options.corners.end() ? std::vector<int>{} : requested->second)) {
+         corner_choices(boundary, f, user_corners ? requested->second : std::vector<int>{})) {
       try {
-        FaceMeshResult r = mesh_face(index, f, boundary, corners, nodes, options.templates);
-        if (!best || r.inverted < best->inverted ||
-            (r.inverted == best->inverted && r.worst_corner > best->worst_corner)) {
-          best = std::move(r);
-          inverted_where = " (the face is not convex enough for its corners " + corner_text(boundary, corners) +
-                           "; try --corners)";
-        }
-      } catch (const InputError& e) {
+        keep(mesh_face(index, f, boundary, corners, nodes, options.templates));
+      } catch (const std::exception& e) {  // an internal failure of one route is noted; others follow
         refusal = e.what();
       }
     }
-    if (!best) throw InputError(refusal);
+    decompose = !user_corners;  // the user's corners are an instruction
   }
+  if (decompose && (!best || best->inverted > 0 || best->worst_corner < kGoodEnoughCorner)) {
+    try {
+      keep(mesh_face_decomposed(index.face(f), f, boundary, nodes, index.vertex_count(), size, options.templates));
+    } catch (const InputError& e) {
+      if (!best) refusal = e.what();
+    }
+  }
+  if (!best) throw InputError(refusal);
   if (best->inverted > 0 && !options.allow_inverted) {
-    throw InputError(name + ": " + std::to_string(best->inverted) + " quads stay inverted after repair" + inverted_where);
+    throw InputError(name + ": " + std::to_string(best->inverted) + " quads stay inverted after repair (" +
+                     best->template_tree.substr(0, 60) + ")");
   }
   return std::move(*best);
 }

@@ -199,18 +199,16 @@ class MeshObjectTest(unittest.TestCase):
 
     def test_refused_face_is_reported_and_keep_going_meshes_the_rest(self):
         from freecad.templatequad import make_mesh
-        holed = Part.makePlane(100, 60).cut(Part.makeCompound([  # a face with two holes
-            Part.makeCylinder(8, 1, FreeCAD.Vector(25, 30, -0.5)),
-            Part.makeCylinder(8, 1, FreeCAD.Vector(75, 30, -0.5))]))
+        sphere = Part.makeSphere(10)  # one face: no edge but its seam and two poles
         square = Part.makePlane(20, 20, FreeCAD.Vector(200, 0, 0))
-        part = self._part(Part.makeCompound(holed.Faces + [square]), "HoledAndSquare")
+        part = self._part(Part.makeCompound(sphere.Faces + [square]), "SphereAndSquare")
         with self.assertRaises(ValueError, msg="a refused face without KeepGoing") as caught:
             make_mesh(self.doc, part, size=5.0)
         self.assertIn("Face1", str(caught.exception), "the error maps tquad's face 0")
         mesh = make_mesh(self.doc, part, size=5.0, keep_going=True)
         self.assertEqual(len(mesh.RefusedFaces), 1, "one refused face")
         self.assertTrue(mesh.RefusedFaces[0].startswith("Face1: "), mesh.RefusedFaces[0])
-        self.assertIn("hole", mesh.RefusedFaces[0], "the reason is kept")
+        self.assertGreater(len(mesh.RefusedFaces[0]), len("Face1: "), "the reason is kept")
         self.assertEqual([t.split(":")[0] for t in mesh.TemplateTrees], ["Face2"],
                          "the other face is meshed")
         self.assertEqual(mesh.FemMesh.FaceCount, 16, "20 x 20 square at size 5")

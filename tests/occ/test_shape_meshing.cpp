@@ -241,13 +241,37 @@ TEST(ShapeMeshing, FaceWithOneHoleIsCutInTwo) {
   EXPECT_EQ(check_primitive(ring.Face(), "ring").refused, 0);
 }
 
+TEST(ShapeMeshing, FacesWithSeveralHolesAreDecomposed) {
+  const std::vector<std::vector<gp_Pnt>> layouts = {
+      {gp_Pnt(25, 30, 0), gp_Pnt(75, 30, 0)},
+      {gp_Pnt(15, 15, 0), gp_Pnt(85, 15, 0), gp_Pnt(85, 45, 0), gp_Pnt(15, 45, 0), gp_Pnt(50, 30, 0)}};
+  for (const std::vector<gp_Pnt>& centres : layouts) {
+    const std::string name = "plate_" + std::to_string(centres.size()) + "_holes";
+    EXPECT_EQ(check_primitive(plate_with_holes(centres), name).refused, 0) << name;
+    const ShapeMeshResult result = mesh_shape(plate_with_holes(centres), ShapeMeshOptions{});
+    ASSERT_EQ(result.mesh.faces.size(), 1u);
+    EXPECT_EQ(result.mesh.faces[0].template_tree.substr(0, 1), "D") << result.mesh.faces[0].template_tree;
+    // One face with h holes: nodes = 1 + quads + boundary_edges / 2 - h.
+    long long boundary_edges = 0;
+    std::map<std::pair<NodeId, NodeId>, int> uses;
+    for (const Quad& q : result.mesh.quads) {
+      for (int i = 0; i < 4; ++i) ++uses[{std::min(q[i], q[(i + 1) % 4]), std::max(q[i], q[(i + 1) % 4])}];
+    }
+    for (const auto& [edge, count] : uses) boundary_edges += count == 1 ? 1 : 0;
+    EXPECT_EQ(static_cast<long long>(result.mesh.nodes.size()),
+              1 + static_cast<long long>(result.mesh.quads.size()) + boundary_edges / 2 -
+                  static_cast<long long>(centres.size()))
+        << name;
+  }
+}
+
 TEST(ShapeMeshing, RefusedFacesNameTheFace) {
-  ShapeMeshOptions options;
+  // A whole sphere: no edge but its seam and two poles.
   try {
-    mesh_shape(plate_with_holes({gp_Pnt(25, 30, 0), gp_Pnt(75, 30, 0)}), options);
-    FAIL() << "a face with two holes should be refused without --keep-going";
+    mesh_shape(BRepPrimAPI_MakeSphere(10.0).Shape(), ShapeMeshOptions{});
+    FAIL() << "a whole sphere should be refused without --keep-going";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("face 0 has 2 inner wires"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("face 0"), std::string::npos) << e.what();
   }
 }
 

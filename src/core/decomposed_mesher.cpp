@@ -1,0 +1,96 @@
+#include "core/decomposed_mesher.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "core/cut_intervals.h"
+#include "core/input_error.h"
+
+namespace tquad {
+
+namespace {
+
+// Mean length of the boundary segments at domain node `node`.
+double spacing_at(const PlanarDomain& domain, int node) {
+  int loop = 0;
+  while (node >= domain.offset(loop + 1)) ++loop;
+  const std::vector<Vec3>& p = domain.loops[loop].points;
+  const int n = static_cast<int>(p.size()), i = node - domain.offset(loop);
+  return 0.5 * (distance(p[i], p[(i + 1) % n]) + distance(p[i], p[(i + n - 1) % n]));
+}
+
+// Inner nodes of a straight cut, spaced from the boundary spacing at one end to that
+// at the other (linearly), so graded boundaries stay graded across the cut.
+std::vector<int> add_cut_nodes(const PlanarDomain& domain, const CutCurve& cut, int edges, QuadMesh& mesh) {
+  const double ha = spacing_at(domain, cut.from), hb = spacing_at(domain, cut.to);
+  std::vector<double> at{0.0};
+  for (int j = 0; j < edges; ++j) at.push_back(at.back() + ha + (hb - ha) * (j + 0.5) / edges);
+  const Vec3 a = mesh.nodes[cut.from], b = mesh.nodes[cut.to];
+  std::vector<int> nodes{cut.from};
+  for (int k = 1; k < edges; ++k) {
+    const double t = at[k] / at.back();
+    nodes.push_back(static_cast<int>(mesh.nodes.size()));
+    mesh.nodes.push_back((1 - t) * a + t * b);
+  }
+  nodes.push_back(cut.to);
+  return nodes;
+}
+
+}  // namespace
+
+QuadMesh mesh_decomposed_domain(const PlanarDomain& domain, const FaceDecomposition& d,
+                                const std::vector<int>& cut_counts, const MeshOptions& options) {
+  QuadMesh mesh;
+  for (const DomainLoop& loop : domain.loops) mesh.nodes.insert(mesh.nodes.end(), loop.points.begin(), loop.points.end());
+  std::vector<std::vector<int>> cut_nodes;
+  for (std::size_t c = 0; c < d.cuts.size(); ++c) {
+    cut_nodes.push_back(add_cut_nodes(domain, d.cuts[c], cut_counts[c], mesh));
+    mesh.subregion_cuts.emplace_back(cut_nodes.back().begin(), cut_nodes.back().end());
+  }
+  std::string trees;
+  for (std::size_t p = 0; p < d.patches.size(); ++p) {
+    std::vector<int> loop;
+    BoundaryLoop region;
+    for (const PatchSide& side : d.patches[p].sides) {
+      const std::vector<int> nodes = side_nodes(domain, d, side, cut_nodes);
+      region.corners.push_back(static_cast<int>(loop.size()));
+      loop.insert(loop.end(), nodes.begin(), nodes.end() - 1);
+    }
+    for (int id : loop) region.points.push_back(mesh.nodes[id]);
+    QuadMesh patch;
+    try {
+      patch = mesh_boundary(region, options);
+    } catch (const InputError& e) {
+      throw InputError("patch " + std::to_string(p) + " of the decomposition: " + e.what());
+    }
+    const int base = static_cast<int>(mesh.nodes.size()), n = static_cast<int>(loop.size());
+    mesh.nodes.insert(mesh.nodes.end(), patch.nodes.begin() + n, patch.nodes.end());
+    for (Quad q : patch.quads) {
+      for (NodeId& v : q) v = v < n ? loop[v] : base + (v - n);
+      mesh.quads.push_back(q);
+    }
+    if (static_cast<long long>(mesh.quads.size()) > options.max_quads) {
+      throw InputError("the mesh would have more than " + std::to_string(options.max_quads) + " quads");
+    }
+    trees += (trees.empty() ? "" : ",") + patch.template_tree;
+  }
+  // Templates repaired each patch with its cut nodes fixed; what is left can move
+  // cut nodes too (only the face's boundary stays).
+  if (options.untangle) untangle_mesh(mesh, domain.point_count(), Vec3{0, 0, 1});
+  mesh.template_tree = "D" + std::to_string(d.patches.size()) + "[" + trees + "]";
+  const long long expected = 1 + static_cast<long long>(mesh.quads.size()) + domain.point_count() / 2 - domain.hole_count();
+  if (static_cast<long long>(mesh.nodes.size()) != expected) {
+    throw std::logic_error("decomposed mesh has " + std::to_string(mesh.nodes.size()) + " nodes, expected " +
+                           std::to_string(expected));
+  }
+  return mesh;
+}
+
+QuadMesh mesh_planar_domain(const PlanarDomain& domain, double size, const MeshOptions& options) {
+  if (!(size > 0) || !std::isfinite(size)) throw InputError("the target size must be a positive number");
+  const FaceDecomposition d = decompose_domain(domain);
+  return mesh_decomposed_domain(domain, d, assign_cut_intervals(domain, d, size), options);
+}
+
+}  // namespace tquad

@@ -1,0 +1,460 @@
+#include "core/face_decomposition.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+#include <tuple>
+
+#include "core/coarse_triangulation.h"
+#include "core/input_error.h"
+#include "core/planar_predicates.h"
+
+namespace tquad {
+
+namespace {
+
+constexpr double kDegree = M_PI / 180.0;
+// A CAD vertex that turns this much is a corner the patches keep (the corner rule of
+// face_corners.h, a little stricter because the turn here is the discrete one).
+constexpr double kSharpVertexTurn = 30.0 * kDegree;
+// Any boundary point turning this much is a corner, CAD vertex or not.
+constexpr double kSharpPointTurn = 60.0 * kDegree;
+// A piece of boundary between coarse vertices turns at most this much in all: a
+// cut's end then meets the piece at most ~30 degrees off its chord.
+constexpr double kMaxPieceTurn = 60.0 * kDegree;
+// Two triangles become one four-sided patch when every corner of the union lies in
+// [25, 155] degrees.
+constexpr double kPairAngleMin = 25.0 * kDegree;
+// A cut that leaves the boundary at less than this makes a sliver patch against a
+// curved piece: the piece is split (when it can be) so the cut can start elsewhere.
+constexpr double kMinCutAngle = 15.0 * kDegree;
+
+int wrap(int i, int n) { return ((i % n) + n) % n; }
+
+// Unsigned angle between two vectors (radians, in [0, pi]).
+double angle_between(const Vec3& u, const Vec3& v) {
+  return std::atan2(std::abs(u.x * v.y - u.y * v.x), u.x * v.x + u.y * v.y);
+}
+
+// Signed turn of the loop at point i (radians, > 0 to the left).
+double turn_at(const std::vector<Vec3>& p, int i) {
+  const int n = static_cast<int>(p.size());
+  const Vec3 a = p[i] - p[wrap(i - 1, n)], b = p[wrap(i + 1, n)] - p[i];
+  return std::atan2(a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y);
+}
+
+// Points first+1 .. last-1 (forward, cyclic) of a loop of n points.
+// (first == last: the whole loop but that point.)
+int inner_count(int first, int last, int n) { return first == last ? n - 1 : wrap(last - first, n) - 1; }
+
+// The coarse vertices of one loop (sorted point indices).
+class LoopCoarsening {
+ public:
+  explicit LoopCoarsening(const DomainLoop& loop) : points_(loop.points) {
+    const int n = size();
+    turns_.resize(n);
+    for (int i = 0; i < n; ++i) turns_[i] = turn_at(points_, i);
+    for (int i = 0; i < n; ++i) {
+      const bool vertex = !loop.vertex.empty() && loop.vertex[i];
+      if ((vertex && std::abs(turns_[i]) >= kSharpVertexTurn) || std::abs(turns_[i]) >= kSharpPointTurn) {
+        coarse_.insert(i);
+      }
+    }
+    if (coarse_.empty()) coarse_.insert(sharpest_point());
+    split_by_turning();
+    while (static_cast<int>(coarse_.size()) < std::min(3, n)) split_longest();
+  }
+
+  const std::set<int>& coarse() const { return coarse_; }
+
+  // (first, last) of each piece between consecutive coarse vertices, in loop order.
+  std::vector<std::pair<int, int>> pieces() const {
+    std::vector<std::pair<int, int>> out;
+    for (auto it = coarse_.begin(); it != coarse_.end(); ++it) {
+      const auto next = std::next(it);
+      out.push_back({*it, next == coarse_.end() ? *coarse_.begin() : *next});
+    }
+    return out;
+  }
+
+  // Adds the middle point of the piece; false when it has a single segment.
+  bool split(int first, int last) {
+    const int inner = inner_count(first, last, size());
+    if (inner < 1) return false;
+    coarse_.insert(wrap(first + (inner + 1) / 2, size()));
+    return true;
+  }
+
+  // Adds the middle point of the piece holding segment `segment` (from point segment
+  // to segment + 1); false when that piece has a single segment.
+  bool split_piece_at(int segment) {
+    int first = *coarse_.rbegin(), last = *coarse_.begin();  // the wrapping piece
+    const auto after = coarse_.upper_bound(segment);
+    if (after != coarse_.end() && after != coarse_.begin()) {
+      last = *after;
+      first = *std::prev(after);
+    }
+    return split(first, last);
+  }
+
+ private:
+  int size() const { return static_cast<int>(points_.size()); }
+
+  int sharpest_point() const {
+    int best = 0;
+    for (int i = 1; i < size(); ++i) if (std::abs(turns_[i]) > std::abs(turns_[best])) best = i;
+    return best;
+  }
+
+  // Splits each piece into equal shares of its turning of at most kMaxPieceTurn.
+  void split_by_turning() {
+    for (const auto& [first, last] : pieces()) {
+      const int inner = inner_count(first, last, size());
+      double total = 0;
+      for (int k = 1; k <= inner; ++k) total += std::abs(turns_[wrap(first + k, size())]);
+      const int shares = static_cast<int>(std::ceil(total / kMaxPieceTurn - 1e-9));
+      if (shares <= 1) continue;
+      double running = 0;
+      int next_share = 1;
+      for (int k = 1; k <= inner && next_share < shares; ++k) {
+        const int i = wrap(first + k, size());
+        running += std::abs(turns_[i]);
+        if (running >= next_share * total / shares - 1e-12) {
+          coarse_.insert(i);
+          ++next_share;
+        }
+      }
+    }
+  }
+
+  void split_longest() {
+    int best_first = 0, best_last = 0, most = -1;
+    for (const auto& [first, last] : pieces()) {
+      const int inner = inner_count(first, last, size());
+      if (inner > most) { most = inner; best_first = first; best_last = last; }
+    }
+    if (!split(best_first, best_last)) throw InputError("a loop has fewer than 3 points");
+  }
+
+  const std::vector<Vec3>& points_;
+  std::vector<double> turns_;
+  std::set<int> coarse_;
+};
+
+// The coarse polygon: its vertices (loop, point) in loop order, and the reverse map.
+struct CoarsePolygon {
+  std::vector<std::vector<int>> points;  // per loop, point indices
+  std::vector<std::pair<int, int>> of_id;  // coarse id -> (loop, position in points[loop])
+
+  explicit CoarsePolygon(const std::vector<std::set<int>>& coarse) {
+    for (std::size_t l = 0; l < coarse.size(); ++l) {
+      points.emplace_back(coarse[l].begin(), coarse[l].end());
+      for (std::size_t k = 0; k < points[l].size(); ++k) of_id.push_back({static_cast<int>(l), static_cast<int>(k)});
+    }
+  }
+  int loop(int id) const { return of_id[id].first; }
+  int point(int id) const { return points[of_id[id].first][of_id[id].second]; }
+  // y follows x on their loop: the side x -> y is a boundary piece.
+  bool is_piece(int x, int y) const {
+    if (loop(x) != loop(y)) return false;
+    const int n = static_cast<int>(points[loop(x)].size());
+    return of_id[y].second == (of_id[x].second + 1) % n;
+  }
+};
+
+class Decomposer {
+ public:
+  explicit Decomposer(const PlanarDomain& domain) : d_(domain) {
+    for (const DomainLoop& loop : d_.loops) coarsening_.emplace_back(loop);
+    split_by_feature_size();
+  }
+
+  FaceDecomposition run() {
+    FaceDecomposition out;
+    std::vector<std::set<int>> coarse;
+    for (const LoopCoarsening& c : coarsening_) coarse.push_back(c.coarse());
+    for (int round = 0;; ++round) {
+      const CoarsePolygon polygon(coarse);
+      std::vector<CoarseTriangle> triangles;
+      try {
+        triangles = triangulate_polygon_with_holes(coarse_loops(polygon));
+      } catch (const TriangulationFailure& e) {
+        if (all_points(coarse)) throw InputError(std::string("the boundary cannot be cut into patches: ") + e.what());
+        coarse = every_point();
+        ++out.refinements;
+        continue;
+      }
+      // (loop, segment): met by a cut (must be cleared), or meeting a cut's end at a
+      // sliver angle (cleared when its piece can still be split).
+      std::vector<std::pair<int, int>> blocked, sliver;
+      for (const CoarseTriangle& t : triangles) {
+        for (int i = 0; i < 3; ++i) {
+          const int x = t[i], y = t[(i + 1) % 3];
+          // Each diagonal is met once in each direction: checked once.
+          if (x < y && !polygon.is_piece(x, y) && !polygon.is_piece(y, x)) check_cut(polygon, x, y, blocked, sliver);
+        }
+      }
+      bool added = false;
+      for (const auto& [loop, segment] : blocked) added = coarsening_[loop].split_piece_at(segment) || added;
+      if (blocked.empty()) {
+        if (round < 8) for (const auto& [loop, segment] : sliver) added = coarsening_[loop].split_piece_at(segment) || added;
+        if (!added) {
+          build(polygon, triangles, out);
+          return out;
+        }
+      }
+      ++out.refinements;
+      coarse.clear();
+      for (const LoopCoarsening& c : coarsening_) coarse.push_back(c.coarse());
+      if (!added || round > 12) {
+        if (all_points(coarse)) throw InputError("the boundary cannot be cut into patches: a cut leaves the domain");
+        coarse = every_point();
+      }
+    }
+  }
+
+ private:
+  const Vec3& point(int loop, int i) const { return d_.loops[loop].points[i]; }
+
+  // Pieces much longer than the gap in front of them (the distance from their middle
+  // to the rest of the boundary, their neighbouring pieces left out) are split, so the
+  // coarse vertices are spaced like the domain's local feature size and the
+  // triangulation has no long slivers (a plate's long side next to a row of holes).
+  void split_by_feature_size() {
+    constexpr double kLongerThanGap = 2.0;
+    for (int pass = 0; pass < 8; ++pass) {
+      bool changed = false;
+      for (int l = 0; l < d_.loop_count(); ++l) {
+        const int n = loop_size(l);
+        const std::vector<std::pair<int, int>> pieces = coarsening_[l].pieces();
+        const int count = static_cast<int>(pieces.size());
+        for (int k = 0; k < count; ++k) {
+          const auto [first, last] = pieces[k];
+          const int inner = inner_count(first, last, n);
+          if (inner < 1) continue;
+          const Vec3& middle = point(l, wrap(first + (inner + 1) / 2, n));
+          const double chord = distance(point(l, first), point(l, last));
+          // Points of this piece and its two neighbours are not "in front" of it.
+          const int skip_from = pieces[wrap(k - 1, count)].first, skip_to = pieces[(k + 1) % count].second;
+          const int skipped = count >= 3 ? inner_count(skip_from, skip_to, n) + 2 : n;
+          double gap = INFINITY;
+          for (int m = 0; m < d_.loop_count(); ++m) {
+            for (int i = 0; i < loop_size(m); ++i) {
+              if (m == l && wrap(i - skip_from, n) < skipped) continue;
+              gap = std::min(gap, distance(middle, point(m, i)));
+            }
+          }
+          if (chord > kLongerThanGap * gap) changed = coarsening_[l].split(first, last) || changed;
+        }
+      }
+      if (!changed) break;
+    }
+  }
+  int loop_size(int loop) const { return static_cast<int>(d_.loops[loop].points.size()); }
+
+  std::vector<std::vector<Vec3>> coarse_loops(const CoarsePolygon& polygon) const {
+    std::vector<std::vector<Vec3>> loops;
+    for (std::size_t l = 0; l < polygon.points.size(); ++l) {
+      loops.emplace_back();
+      for (int i : polygon.points[l]) loops.back().push_back(point(static_cast<int>(l), i));
+    }
+    return loops;
+  }
+
+  bool all_points(const std::vector<std::set<int>>& coarse) const {
+    for (int l = 0; l < d_.loop_count(); ++l) if (static_cast<int>(coarse[l].size()) != loop_size(l)) return false;
+    return true;
+  }
+
+  std::vector<std::set<int>> every_point() const {
+    std::vector<std::set<int>> coarse(d_.loops.size());
+    for (int l = 0; l < d_.loop_count(); ++l) for (int i = 0; i < loop_size(l); ++i) coarse[l].insert(i);
+    return coarse;
+  }
+
+  // Checks the straight cut between coarse vertices x and y against the boundary:
+  // appends to `blocked` the segments it meets away from its own ends (or, when it
+  // leaves the domain at an end, the segments there), and to `sliver` the segments at
+  // an end that it leaves at less than kMinCutAngle.
+  void check_cut(const CoarsePolygon& polygon, int x, int y, std::vector<std::pair<int, int>>& blocked,
+                 std::vector<std::pair<int, int>>& sliver) const {
+    const int lx = polygon.loop(x), ly = polygon.loop(y);
+    const int px = polygon.point(x), py = polygon.point(y);
+    const Vec3 &a = point(lx, px), &b = point(ly, py);
+    const std::size_t before = blocked.size();
+    for (int l = 0; l < d_.loop_count(); ++l) {
+      const int n = loop_size(l);
+      for (int s = 0; s < n; ++s) {
+        const int s1 = (s + 1) % n;
+        const bool touches_x = l == lx && (s == px || s1 == px);
+        const bool touches_y = l == ly && (s == py || s1 == py);
+        if (touches_x || touches_y) continue;
+        if (segments_meet(a, b, point(l, s), point(l, s1))) blocked.push_back({l, s});
+      }
+    }
+    if (blocked.size() != before) return;
+    for (const auto& [l, p, from, to] : {std::tuple{lx, px, a, b}, std::tuple{ly, py, b, a}}) {
+      const int n = loop_size(l);
+      const Vec3 &prev = point(l, wrap(p - 1, n)), &next = point(l, wrap(p + 1, n));
+      if (!inside_corner(prev, from, next, to)) {
+        blocked.push_back({l, p});
+        blocked.push_back({l, wrap(p - 1, n)});
+        continue;
+      }
+      if (angle_between(next - from, to - from) < kMinCutAngle) sliver.push_back({l, p});
+      if (angle_between(prev - from, to - from) < kMinCutAngle) sliver.push_back({l, wrap(p - 1, n)});
+    }
+  }
+
+  // Direction in which the side x -> y leaves x: along the boundary for a piece, along
+  // the chord for a cut.
+  Vec3 leaving(const CoarsePolygon& polygon, int x, int y) const {
+    const int l = polygon.loop(x), p = polygon.point(x);
+    if (polygon.is_piece(x, y)) return point(l, (p + 1) % loop_size(l)) - point(l, p);
+    return point(polygon.loop(y), polygon.point(y)) - point(l, p);
+  }
+  // Direction in which the side x -> y arrives at y, reversed (from y back along it).
+  Vec3 arriving_back(const CoarsePolygon& polygon, int x, int y) const {
+    const int l = polygon.loop(y), p = polygon.point(y);
+    if (polygon.is_piece(x, y)) return point(l, wrap(p - 1, loop_size(l))) - point(l, p);
+    return point(polygon.loop(x), polygon.point(x)) - point(l, p);
+  }
+
+  // Smallest sine of the corners of the patch with these coarse corners (counter-
+  // clockwise), measured on the real sides; -1 when a corner is outside [lo, pi - lo].
+  double corner_quality(const CoarsePolygon& polygon, const std::vector<int>& corners, double lo) const {
+    const int k = static_cast<int>(corners.size());
+    double worst = 1;
+    for (int i = 0; i < k; ++i) {
+      const int prev = corners[wrap(i - 1, k)], here = corners[i], next = corners[(i + 1) % k];
+      const Vec3 out = leaving(polygon, here, next), back = arriving_back(polygon, prev, here);
+      double angle = std::atan2(out.x * back.y - out.y * back.x, out.x * back.x + out.y * back.y);
+      if (angle < 0) angle += 2 * M_PI;
+      if (angle < lo || angle > M_PI - lo) return -1;
+      worst = std::min(worst, std::sin(angle));
+    }
+    return worst;
+  }
+
+  void build(const CoarsePolygon& polygon, const std::vector<CoarseTriangle>& triangles, FaceDecomposition& out) const {
+    // Pieces: one per coarse side on a loop.
+    std::map<std::pair<int, int>, int> piece_of;
+    for (std::size_t l = 0; l < polygon.points.size(); ++l) {
+      const std::vector<int>& pts = polygon.points[l];
+      for (std::size_t k = 0; k < pts.size(); ++k) {
+        piece_of[{static_cast<int>(l), static_cast<int>(k)}] = static_cast<int>(out.pieces.size());
+        out.pieces.push_back({static_cast<int>(l), pts[k], pts[(k + 1) % pts.size()]});
+      }
+    }
+    // Triangles across each diagonal, and the pairs worth merging, best first.
+    std::map<std::pair<int, int>, std::vector<int>> across;
+    for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+      for (int i = 0; i < 3; ++i) {
+        const int x = triangles[t][i], y = triangles[t][(i + 1) % 3];
+        if (!polygon.is_piece(x, y)) across[{std::min(x, y), std::max(x, y)}].push_back(t);
+      }
+    }
+    struct Pair { double quality; int t1, t2; std::vector<int> corners; };
+    std::vector<Pair> pairs;
+    for (const auto& [edge, users] : across) {
+      if (users.size() != 2) continue;
+      const CoarseTriangle &t1 = triangles[users[0]], &t2 = triangles[users[1]];
+      int i1 = 0;
+      while (!(std::min(t1[i1], t1[(i1 + 1) % 3]) == edge.first && std::max(t1[i1], t1[(i1 + 1) % 3]) == edge.second)) ++i1;
+      const int a = t1[i1], b = t1[(i1 + 1) % 3], c = t1[(i1 + 2) % 3];
+      int d = -1;
+      for (int v : t2) if (v != a && v != b) d = v;
+      const std::vector<int> corners{a, d, b, c};
+      const double q = corner_quality(polygon, corners, kPairAngleMin);
+      if (q > 0) pairs.push_back({q, users[0], users[1], corners});
+    }
+    std::stable_sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) { return x.quality > y.quality; });
+    std::vector<char> used(triangles.size(), 0);
+    std::vector<std::vector<int>> patches;
+    for (const Pair& p : pairs) {
+      if (used[p.t1] || used[p.t2]) continue;
+      used[p.t1] = used[p.t2] = 1;
+      patches.push_back(p.corners);
+    }
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      if (!used[t]) patches.push_back({triangles[t][0], triangles[t][1], triangles[t][2]});
+    }
+    // Sides: pieces, or cuts numbered in order of first use.
+    std::map<std::pair<int, int>, int> cut_of;
+    for (const std::vector<int>& corners : patches) {
+      DomainPatch patch;
+      const int k = static_cast<int>(corners.size());
+      for (int i = 0; i < k; ++i) {
+        const int x = corners[i], y = corners[(i + 1) % k];
+        PatchSide side;
+        if (polygon.is_piece(x, y)) {
+          side.index = piece_of.at(polygon.of_id[x]);
+        } else {
+          side.is_cut = true;
+          const auto key = std::make_pair(std::min(x, y), std::max(x, y));
+          auto it = cut_of.find(key);
+          if (it == cut_of.end()) {
+            const int from = d_.offset(polygon.loop(key.first)) + polygon.point(key.first);
+            const int to = d_.offset(polygon.loop(key.second)) + polygon.point(key.second);
+            const double length = distance(point(polygon.loop(key.first), polygon.point(key.first)),
+                                           point(polygon.loop(key.second), polygon.point(key.second)));
+            it = cut_of.emplace(key, static_cast<int>(out.cuts.size())).first;
+            out.cuts.push_back({from, to, length});
+          }
+          side.index = it->second;
+          side.reversed = x != key.first;
+        }
+        patch.sides.push_back(side);
+      }
+      out.patches.push_back(std::move(patch));
+    }
+  }
+
+  const PlanarDomain& d_;
+  std::vector<LoopCoarsening> coarsening_;
+};
+
+void check_domain(const PlanarDomain& domain) {
+  if (domain.loops.empty()) throw InputError("the domain has no loop");
+  for (int l = 0; l < domain.loop_count(); ++l) {
+    const std::vector<Vec3>& p = domain.loops[l].points;
+    const std::string name = l == 0 ? "the outer loop" : "hole " + std::to_string(l);
+    if (p.size() < 3) throw InputError(name + " has fewer than 3 points");
+    const double area = twice_signed_area(p);
+    if (l == 0 ? area <= 0 : area >= 0) {
+      throw InputError(name + (l == 0 ? " must run counter-clockwise" : " must run clockwise"));
+    }
+  }
+}
+
+}  // namespace
+
+int piece_segments(const PlanarDomain& domain, const BoundaryPiece& piece) {
+  const int n = static_cast<int>(domain.loops[piece.loop].points.size());
+  const int s = wrap(piece.last - piece.first, n);
+  return s == 0 ? n : s;
+}
+
+std::vector<int> side_nodes(const PlanarDomain& domain, const FaceDecomposition& decomposition,
+                            const PatchSide& side, const std::vector<std::vector<int>>& cut_nodes) {
+  if (side.is_cut) {
+    std::vector<int> nodes = cut_nodes[side.index];
+    if (side.reversed) std::reverse(nodes.begin(), nodes.end());
+    return nodes;
+  }
+  const BoundaryPiece& piece = decomposition.pieces[side.index];
+  const int n = static_cast<int>(domain.loops[piece.loop].points.size());
+  const int offset = domain.offset(piece.loop);
+  std::vector<int> nodes;
+  for (int k = 0; k <= piece_segments(domain, piece); ++k) nodes.push_back(offset + (piece.first + k) % n);
+  return nodes;
+}
+
+FaceDecomposition decompose_domain(const PlanarDomain& domain) {
+  check_domain(domain);
+  return Decomposer(domain).run();
+}
+
+}  // namespace tquad

@@ -1,0 +1,76 @@
+// decompose_domain: a face's planar domain (any outline, any number of holes) cut into
+// patches of 3 and 4 curves that the templates mesh with any even count: the domain
+// decomposition the paper leaves to its user (abstract, section 1).
+//
+// Method (coarse triangulation and pairing; DESIGN.md, "face decomposition"):
+//  1. Coarse vertices on every loop: the CAD vertices where the boundary turns
+//     sharply (they must stay patch corners), then more points so that no piece of
+//     boundary between two coarse vertices turns by more than 60 degrees (a circle
+//     gets 6), and every loop has at least 3.
+//  2. A triangulation of the polygon of coarse vertices (coarse_triangulation.h).
+//     Its diagonals are the cuts, straight in the chart. A cut that meets the real
+//     boundary (a piece bulging across its chord) adds a coarse vertex in that piece
+//     and the triangulation is made again; in the end, every boundary point can be a
+//     coarse vertex, where the cuts are true diagonals of the boundary polygon, so
+//     the method succeeds on every simple domain.
+//  3. Triangles are paired across cuts into four-sided patches, greedily by the shape
+//     of the merged quadrilateral (its corners measured on the real boundary pieces),
+//     when every corner lies between 25 and 155 degrees; unpaired triangles stay
+//     three-sided patches (T3/T4). Greedy rather than Boost.Graph's
+//     maximum_weighted_matching, which in Boost 1.74 can crash or not terminate on
+//     some graphs (boostorg/graph issues 199, 223, 399).
+//
+// The same domain always gives the same decomposition (no randomness, no threads).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/planar_domain.h"
+
+namespace tquad {
+
+// Points of loop `loop` from `first` forward (in loop order) to `last`.
+struct BoundaryPiece {
+  int loop = 0, first = 0, last = 0;
+};
+
+// A straight cut between two boundary points (domain node ids).
+struct CutCurve {
+  int from = 0, to = 0;
+  double length = 0;
+};
+
+// A patch side lies on one boundary piece or one cut; a cut is walked from `to` to
+// `from` when `reversed`.
+struct PatchSide {
+  bool is_cut = false;
+  int index = 0;
+  bool reversed = false;
+};
+
+// Sides counter-clockwise; side k begins at the patch's corner k.
+struct DomainPatch {
+  std::vector<PatchSide> sides;
+};
+
+struct FaceDecomposition {
+  std::vector<BoundaryPiece> pieces;
+  std::vector<CutCurve> cuts;
+  std::vector<DomainPatch> patches;
+  int refinements = 0;  // times step 2 added coarse vertices to clear a cut
+};
+
+// Throws InputError when the loops are not oriented as PlanarDomain requires, or have
+// fewer than 3 points.
+FaceDecomposition decompose_domain(const PlanarDomain& domain);
+
+// The domain node ids along a patch side, from its start to its end; `cut_nodes[c]`
+// holds cut c's nodes from `from` to `to`.
+std::vector<int> side_nodes(const PlanarDomain& domain, const FaceDecomposition& decomposition,
+                            const PatchSide& side, const std::vector<std::vector<int>>& cut_nodes);
+
+// Segments of a boundary piece.
+int piece_segments(const PlanarDomain& domain, const BoundaryPiece& piece);
+
+}  // namespace tquad

@@ -1,0 +1,23 @@
+// Planar domain generators for the face decomposition tests: orthogonal outlines (L,
+// T, U, H, combs), star-shaped and other non-convex polygons, with 0 to 20 holes
+// (circles, squares, slots), sampled with uniform or graded spacing. Every domain is
+// valid: simple loops, holes inside the outline and apart from each other, an even
+// boundary total.
+#pragma once
+
+#include <string>
+
+#include "core/planar_domain.h"
+
+namespace tquad::testing {
+
+struct GeneratedDomain {
+  PlanarDomain domain;
+  double size = 0;  // the target edge length the boundary was sampled with
+  std::string description;
+};
+
+// The i-th domain of a reproducible family.
+GeneratedDomain generated_domain(int index);
+
+}  // namespace tquad::testing

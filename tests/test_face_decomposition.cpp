@@ -1,0 +1,148 @@
+// Face decomposition (face_decomposition.h, decomposed_mesher.h): examples, and
+// property checks over generated planar domains (domain_generators.h): orthogonal
+// outlines, star-shaped polygons, 0 to 20 holes, uniform and graded spacing. Every
+// mesh must be all-quad and conforming, keep the boundary points bit-exact and
+// satisfy nodes = 1 + quads + boundary_edges / 2 - holes; the meshes that keep an
+// inverted quad are counted, named and bounded. The worst quality seen is printed.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "core/cut_intervals.h"
+#include "core/decomposed_mesher.h"
+#include "core/input_error.h"
+#include "core/mesh_validation.h"
+#include "core/quality.h"
+#include "domain_generators.h"
+
+namespace tquad {
+namespace {
+
+const Vec3 kUp{0, 0, 1};
+
+std::vector<int> loop_sizes(const PlanarDomain& d) {
+  std::vector<int> sizes;
+  for (const DomainLoop& l : d.loops) sizes.push_back(static_cast<int>(l.points.size()));
+  return sizes;
+}
+
+DomainLoop polygon_loop(const std::vector<Vec3>& corners, int per_side) {
+  DomainLoop loop;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const Vec3 a = corners[i], b = corners[(i + 1) % corners.size()];
+    for (int k = 0; k < per_side; ++k) {
+      loop.points.push_back(a + (static_cast<double>(k) / per_side) * (b - a));
+      loop.vertex.push_back(k == 0);
+    }
+  }
+  return loop;
+}
+
+DomainLoop circle_hole(Vec3 c, double r, int n) {
+  DomainLoop loop;
+  for (int k = 0; k < n; ++k) {
+    const double t = -2 * M_PI * k / n;
+    loop.points.push_back({c.x + r * std::cos(t), c.y + r * std::sin(t), 0});
+  }
+  loop.vertex.assign(n, 0);
+  return loop;
+}
+
+void expect_valid(const PlanarDomain& d, const QuadMesh& mesh, const std::string& what) {
+  ASSERT_EQ(check_domain_mesh(mesh, loop_sizes(d)), "") << what << " " << mesh.template_tree;
+  int k = 0;
+  for (const DomainLoop& loop : d.loops) {
+    for (const Vec3& p : loop.points) ASSERT_TRUE(mesh.nodes[k++] == p) << what << ": boundary point moved";
+  }
+  const QualitySummary q = summarize_quality(mesh, kUp);
+  EXPECT_EQ(q.inverted, 0) << what << " " << mesh.template_tree;
+}
+
+TEST(FaceDecomposition, SquareWithFourCircularHoles) {
+  PlanarDomain d;
+  d.loops.push_back(polygon_loop({{0, 0}, {4, 0}, {4, 4}, {0, 4}}, 12));
+  for (Vec3 c : {Vec3{1, 1}, Vec3{3, 1}, Vec3{3, 3}, Vec3{1, 3}}) d.loops.push_back(circle_hole(c, 0.4, 8));
+  const QuadMesh mesh = mesh_planar_domain(d, 1.0 / 3);
+  expect_valid(d, mesh, "square with four holes");
+  EXPECT_EQ(mesh.template_tree.substr(0, 1), "D");
+}
+
+TEST(FaceDecomposition, LShapeIsCutAtItsReflexCorner) {
+  PlanarDomain d;
+  d.loops.push_back(polygon_loop({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, 4));
+  const FaceDecomposition decomposition = decompose_domain(d);
+  EXPECT_GE(decomposition.cuts.size(), 1u);
+  for (const DomainPatch& p : decomposition.patches) EXPECT_TRUE(p.sides.size() == 3 || p.sides.size() == 4);
+  expect_valid(d, mesh_planar_domain(d, 0.25), "L shape");
+}
+
+TEST(FaceDecomposition, EveryPatchTotalIsEvenAfterIntervalAssignment) {
+  PlanarDomain d;
+  d.loops.push_back(polygon_loop({{0, 0}, {5, 0}, {5, 3}, {0, 3}}, 7));  // 28 edges
+  d.loops.push_back(circle_hole({2.5, 1.5}, 0.7, 10));
+  const FaceDecomposition decomposition = decompose_domain(d);
+  const std::vector<int> counts = assign_cut_intervals(d, decomposition, 0.37);
+  const std::vector<std::vector<int>> no_cut_nodes;
+  for (const DomainPatch& p : decomposition.patches) {
+    int total = 0;
+    for (const PatchSide& s : p.sides) total += s.is_cut ? counts[s.index] : piece_segments(d, decomposition.pieces[s.index]);
+    EXPECT_EQ(total % 2, 0);
+  }
+}
+
+TEST(FaceDecomposition, SameDomainSameDecomposition) {
+  const testing::GeneratedDomain g = testing::generated_domain(40);
+  const QuadMesh a = mesh_planar_domain(g.domain, g.size), b = mesh_planar_domain(g.domain, g.size);
+  EXPECT_EQ(a.quads, b.quads);
+  EXPECT_EQ(a.template_tree, b.template_tree);
+}
+
+TEST(FaceDecomposition, WrongOrientationAndOddTotalsAreRefused) {
+  PlanarDomain d;
+  d.loops.push_back(polygon_loop({{0, 0}, {0, 1}, {1, 1}, {1, 0}}, 2));  // clockwise
+  EXPECT_THROW(decompose_domain(d), InputError);
+  PlanarDomain odd;
+  odd.loops.push_back(polygon_loop({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 2));
+  odd.loops[0].points.pop_back();
+  odd.loops[0].vertex.pop_back();
+  EXPECT_THROW(mesh_planar_domain(odd, 0.5), InputError);
+}
+
+TEST(FaceDecomposition, GeneratedDomainsGiveValidMeshes) {
+  constexpr int kDomains = 5040;  // 7 outlines x 21 hole counts x 2 spacings x 12
+  double worst = 2, sum_min = 0;
+  long long quads = 0, inverted_meshes = 0;
+  std::string worst_where;
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < kDomains; ++i) {
+    const testing::GeneratedDomain g = testing::generated_domain(i);
+    QuadMesh mesh;
+    ASSERT_NO_THROW(mesh = mesh_planar_domain(g.domain, g.size)) << g.description;
+    ASSERT_EQ(check_domain_mesh(mesh, loop_sizes(g.domain)), "") << g.description << " " << mesh.template_tree;
+    int k = 0;
+    for (const DomainLoop& loop : g.domain.loops) {
+      for (const Vec3& p : loop.points) ASSERT_TRUE(mesh.nodes[k++] == p) << g.description << ": point moved";
+    }
+    const QualitySummary q = summarize_quality(mesh, kUp);
+    if (q.inverted > 0) {
+      ++inverted_meshes;
+      std::printf("[ quality  ] inverted quads left in %s\n", g.description.c_str());
+    }
+    if (q.scaled_jacobian.min < worst) { worst = q.scaled_jacobian.min; worst_where = g.description; }
+    sum_min += q.scaled_jacobian.min;
+    quads += static_cast<long long>(mesh.quads.size());
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("[ quality  ] decomposed planar domains: %d meshes, %lld with inverted quads; worst scaled "
+              "Jacobian %.4f (%s), mean of per-mesh minimums %.3f; %lld quads in %.1f s\n",
+              kDomains, inverted_meshes, worst, worst_where.c_str(), sum_min / kDomains, quads, seconds);
+  // Measured: 2 of 5,040 meshes keep one inverted quad each, in a thin patch between
+  // two cuts fanning out of a reflex corner (domains 1356 and 4757; README, Status).
+  // The goal is none; this guards against regressions until then.
+  EXPECT_LE(inverted_meshes, 2);
+}
+
+}  // namespace
+}  // namespace tquad
