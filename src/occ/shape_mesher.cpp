@@ -73,8 +73,21 @@ void check_requested_corners(const ShapeIndex& index, const std::vector<char>& m
   }
 }
 
+// A face whose quads stay inverted.
+struct InvertedQuadsError : InputError {
+  InvertedQuadsError(const std::string& message, std::size_t quads) : InputError(message), quads(quads) {}
+  std::size_t quads;  // in the face's best mesh
+};
+
+// Finer edges may cure a face meshed with at most this many quads: a small curved face
+// of a few segments cannot be meshed on its surface however its nodes move. Larger
+// faces keep their counts (doubling them did not help in the parts measured, and it
+// grows the neighbours' meshes too).
+constexpr std::size_t kRefinableQuads = 16;
+
 struct FaceOutcome {
   bool ok = false;
+  bool finer_edges_may_help = false;
   std::string reason;
   FaceBoundary boundary;
   FaceMeshResult mesh;
@@ -137,8 +150,8 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
   }
   if (!best) throw InputError(refusal);
   if (best->inverted > 0 && !options.allow_inverted) {
-    throw InputError(name + ": " + std::to_string(best->inverted) + " quads stay inverted after repair (" +
-                     best->template_tree.substr(0, 60) + ")");
+    throw InvertedQuadsError(name + ": " + std::to_string(best->inverted) + " quads stay inverted after repair (" +
+                     best->template_tree.substr(0, 60) + ")", best->quads.size());
   }
   return std::move(*best);
 }
@@ -153,6 +166,9 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
     }
     outcome.mesh = best_face_mesh(index, f, outcome.boundary, nodes, options, size);
     outcome.ok = true;
+  } catch (const InvertedQuadsError& e) {
+    outcome.reason = e.what();
+    outcome.finer_edges_may_help = e.quads <= kRefinableQuads;
   } catch (const InputError& e) {
     outcome.reason = e.what();
   } catch (const std::exception& e) {
@@ -200,25 +216,44 @@ ShapeMeshResult mesh_shape(const TopoDS_Shape& shape, const ShapeMeshOptions& op
   result.size = options.size > 0 ? options.size : default_size(shape);
 
   std::vector<double> lengths;
-  std::vector<int> segments = edge_segment_counts(index, result.size, lengths);
+  const std::vector<int> sized = edge_segment_counts(index, result.size, lengths);
   // Only edges of meshed faces are discretized.
   std::vector<char> needed(index.edge_count(), 0);
   for (int f = 0; f < index.face_count(); ++f) {
     if (!meshed[f]) continue;
     for (TopExp_Explorer it(index.face(f), TopAbs_EDGE); it.More(); it.Next()) needed[index.edge_index(it.Current())] = 1;
   }
-  for (int e = 0; e < index.edge_count(); ++e) if (!needed[e]) segments[e] = 0;
-  result.changes = assign_even_intervals(index, meshed, lengths, result.size, segments);
 
+  // Small faces whose quads stay inverted get their edges' counts doubled and the
+  // shape is meshed again (at most kRefinements times).
+  constexpr int kRefinements = 2;
+  std::vector<int> minimum(index.edge_count(), 0);
   ShapeMesh& mesh = result.mesh;
-  const std::vector<EdgeNodes> edges = discretize_edges(index, segments, mesh.nodes);
+  std::vector<FaceOutcome> outcomes;
+  for (int round = 0;; ++round) {
+    std::vector<int> segments = sized;
+    for (int e = 0; e < index.edge_count(); ++e) segments[e] = needed[e] ? std::max(segments[e], minimum[e]) : 0;
+    result.changes = assign_even_intervals(index, meshed, lengths, result.size, segments);
+    mesh.nodes.clear();
+    const std::vector<EdgeNodes> edges = discretize_edges(index, segments, mesh.nodes);
+    if (round == 0) check_requested_corners(index, meshed, options.corners, edges, mesh.nodes);
 
-  check_requested_corners(index, meshed, options.corners, edges, mesh.nodes);
-
-  std::vector<FaceOutcome> outcomes(index.face_count());
-  run_parallel(index.face_count(), options.threads, [&](int f) {
-    if (meshed[f]) outcomes[f] = mesh_one_face(index, f, edges, mesh.nodes, options, result.size);
-  });
+    outcomes.assign(index.face_count(), FaceOutcome{});
+    run_parallel(index.face_count(), options.threads, [&](int f) {
+      if (meshed[f]) outcomes[f] = mesh_one_face(index, f, edges, mesh.nodes, options, result.size);
+    });
+    bool refine = false;
+    for (int f = 0; f < index.face_count() && round < kRefinements; ++f) {
+      if (!meshed[f] || !outcomes[f].finer_edges_may_help) continue;
+      refine = true;
+      for (TopExp_Explorer it(index.face(f), TopAbs_EDGE); it.More(); it.Next()) {
+        const int e = index.edge_index(it.Current());
+        minimum[e] = std::max(minimum[e], 2 * segments[e]);
+      }
+    }
+    if (!refine) break;
+    ++result.refinement_rounds;
+  }
 
   for (int f = 0; f < index.face_count(); ++f) {
     if (meshed[f] && !outcomes[f].ok) mesh.refused_faces.push_back({f, outcomes[f].reason});

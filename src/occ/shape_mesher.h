@@ -40,6 +40,7 @@ struct ShapeMeshResult {
   std::vector<IntervalChange> changes;   // edge counts changed for parity
   long long projected_faces = 0;         // faces meshed by the 3D route
   long long inverted = 0;                // quads still inverted after repair
+  int refinement_rounds = 0;             // times edges of faces with inverted quads were doubled
   double template_seconds = 0;           // summed over faces (all threads)
   double placement_seconds = 0;          // interior nodes onto the surfaces, summed
 };
