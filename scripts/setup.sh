@@ -26,10 +26,7 @@ packages=(
   # tests: real readers and the solver of the files written (meshio, Gmsh, CalculiX);
   # Gmsh is also the peer of bench/compare_gmsh.py
   python3-meshio gmsh python3-gmsh calculix-ccx
-  # core: face decomposition (Boost.Geometry, Boost.Polygon, Boost.Graph headers) and
-  # the interval assignment integer program (lp_solve, LGPL)
-  libboost-dev liblpsolve55-dev
-  # figures: meshes rendered to PNG
+  # figures: meshes drawn to PNG (tools/draw_mesh.py)
   python3-matplotlib
 )
 for arg in "$@"; do
