@@ -1,9 +1,10 @@
 // Face decomposition (face_decomposition.h, decomposed_mesher.h): examples, and
 // property checks over generated planar domains (domain_generators.h): orthogonal
 // outlines, star-shaped polygons, 0 to 20 holes, uniform and graded spacing. Every
-// mesh must be all-quad and conforming, keep the boundary points bit-exact and
-// satisfy nodes = 1 + quads + boundary_edges / 2 - holes; the meshes that keep an
-// inverted quad are counted, named and bounded. The worst quality seen is printed.
+// mesh must be all-quad and conforming, keep the boundary points bit-exact, have no
+// inverted quad and satisfy nodes = 1 + quads + boundary_edges / 2 - holes; meshes
+// with a collapsed quad (a triangle in effect) are counted and bounded. The worst
+// quality seen is printed.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -113,7 +114,7 @@ TEST(FaceDecomposition, WrongOrientationAndOddTotalsAreRefused) {
 TEST(FaceDecomposition, GeneratedDomainsGiveValidMeshes) {
   constexpr int kDomains = 5040;  // 7 outlines x 21 hole counts x 2 spacings x 12
   double worst = 2, sum_min = 0;
-  long long quads = 0, inverted_meshes = 0;
+  long long quads = 0, inverted_meshes = 0, collapsed_meshes = 0, collapsed = 0;
   std::string worst_where;
   const auto start = std::chrono::steady_clock::now();
   for (int i = 0; i < kDomains; ++i) {
@@ -126,6 +127,10 @@ TEST(FaceDecomposition, GeneratedDomainsGiveValidMeshes) {
       for (const Vec3& p : loop.points) ASSERT_TRUE(mesh.nodes[k++] == p) << g.description << ": point moved";
     }
     const QualitySummary q = summarize_quality(mesh, kUp);
+    if (q.collapsed > 0) {
+      ++collapsed_meshes;
+      collapsed += q.collapsed;
+    }
     if (q.inverted > 0) {
       ++inverted_meshes;
       std::printf("[ quality  ] inverted quads left in %s\n", g.description.c_str());
@@ -135,13 +140,17 @@ TEST(FaceDecomposition, GeneratedDomainsGiveValidMeshes) {
     quads += static_cast<long long>(mesh.quads.size());
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("[ quality  ] decomposed planar domains: %d meshes, %lld with inverted quads; worst scaled "
-              "Jacobian %.4f (%s), mean of per-mesh minimums %.3f; %lld quads in %.1f s\n",
-              kDomains, inverted_meshes, worst, worst_where.c_str(), sum_min / kDomains, quads, seconds);
-  // Measured: 2 of 5,040 meshes keep one inverted quad each, in a thin patch between
-  // two cuts fanning out of a reflex corner (domains 1356 and 4757; README, Status).
+  std::printf("[ quality  ] decomposed planar domains: %d meshes, %lld with inverted quads, %lld with "
+              "collapsed quads (%lld quads); worst scaled Jacobian %.4f (%s), mean of per-mesh minimums "
+              "%.3f; %lld quads in %.1f s\n",
+              kDomains, inverted_meshes, collapsed_meshes, collapsed, worst, worst_where.c_str(),
+              sum_min / kDomains, quads, seconds);
+  EXPECT_EQ(inverted_meshes, 0);
+  // Measured: 34 of 5,040 meshes have a quad with an edge under 1/1000 of its longest
+  // (63 quads: two interior nodes of one patch placed almost together by the
+  // templates and their repair, in patches whose corners reach 10 or 170 degrees).
   // The goal is none; this guards against regressions until then.
-  EXPECT_LE(inverted_meshes, 2);
+  EXPECT_LE(collapsed_meshes, 34);
 }
 
 }  // namespace

@@ -95,7 +95,7 @@ void print_summary(std::ostream& out, const MeshCommand& command, const ShapeMes
   out << "  Lee-Lo min " << fixed(quality.lee_lo.min, 3) << " avg " << fixed(quality.lee_lo.avg, 3)
       << "; scaled Jacobian min " << fixed(quality.scaled_jacobian.min, 3) << " avg "
       << fixed(quality.scaled_jacobian.avg, 3) << "\n"
-      << "  inverted " << quality.inverted << ", degenerate " << quality.degenerate << "; time "
+      << "  inverted " << quality.inverted << ", degenerate " << quality.degenerate << ", collapsed " << quality.collapsed << "; time "
       << fixed(seconds, 3) << " s\n";
 }
 
@@ -150,9 +150,10 @@ ShapeMesh mesh_shape_input(const MeshCommand& command, OutputFormat format, Qual
   } catch (const InputError& e) {
     throw InputError(command.input + ": " + e.what());
   }
-  // Quads of a curved shape are signed by their own normals; the occ layer already
-  // checked each face's quads against the face's outer normal.
+  // Lee-Lo is signed by each quad's own normal; the scaled Jacobian is the occ
+  // layer's, each corner against the face's outer normal at that corner.
   quality = summarize_quality(result.mesh.nodes, result.mesh.quads, std::nullopt);
+  use_scaled_jacobians(quality, result.mesh.scaled_jacobian);
   return std::move(result.mesh);
 }
 

@@ -27,6 +27,8 @@ constexpr double kMaxPieceTurn = 60.0 * kDegree;
 // Two triangles become one four-sided patch when every corner of the union lies in
 // [25, 155] degrees.
 constexpr double kPairAngleMin = 25.0 * kDegree;
+// ... or in [10, 170] degrees when one of them has a one-segment boundary piece.
+constexpr double kUrgentPairAngleMin = 10.0 * kDegree;
 // A cut that leaves the boundary at less than this makes a sliver patch against a
 // curved piece: the piece is split (when it can be) so the cut can start elsewhere.
 constexpr double kMinCutAngle = 15.0 * kDegree;
@@ -79,10 +81,11 @@ class LoopCoarsening {
     return out;
   }
 
-  // Adds the middle point of the piece; false when it has a single segment.
-  bool split(int first, int last) {
+  // Adds the middle point of the piece when both halves keep at least `segments`
+  // segments; false otherwise.
+  bool split(int first, int last, int segments = 1) {
     const int inner = inner_count(first, last, size());
-    if (inner < 1) return false;
+    if (inner < 2 * segments - 1) return false;
     coarse_.insert(wrap(first + (inner + 1) / 2, size()));
     return true;
   }
@@ -114,15 +117,18 @@ class LoopCoarsening {
       const int inner = inner_count(first, last, size());
       double total = 0;
       for (int k = 1; k <= inner; ++k) total += std::abs(turns_[wrap(first + k, size())]);
-      const int shares = static_cast<int>(std::ceil(total / kMaxPieceTurn - 1e-9));
+      // Shares of at least 2 segments: a one-segment piece on a three-sided patch
+      // makes the templates add a corner on a straight side.
+      const int shares = std::min(static_cast<int>(std::ceil(total / kMaxPieceTurn - 1e-9)), (inner + 1) / 2);
       if (shares <= 1) continue;
       double running = 0;
-      int next_share = 1;
+      int next_share = 1, previous = 0;
       for (int k = 1; k <= inner && next_share < shares; ++k) {
         const int i = wrap(first + k, size());
         running += std::abs(turns_[i]);
-        if (running >= next_share * total / shares - 1e-12) {
+        if (running >= next_share * total / shares - 1e-12 && k - previous >= 2 && inner + 1 - k >= 2) {
           coarse_.insert(i);
+          previous = k;
           ++next_share;
         }
       }
@@ -246,7 +252,7 @@ class Decomposer {
               gap = std::min(gap, distance(middle, point(m, i)));
             }
           }
-          if (chord > kLongerThanGap * gap) changed = coarsening_[l].split(first, last) || changed;
+          if (chord > kLongerThanGap * gap) changed = coarsening_[l].split(first, last, 2) || changed;
         }
       }
       if (!changed) break;
@@ -308,6 +314,15 @@ class Decomposer {
     }
   }
 
+  // Segments of the boundary piece that starts at coarse vertex x.
+  int piece_segments(const CoarsePolygon& polygon, int x) const {
+    const int l = polygon.loop(x), n = loop_size(l);
+    const std::vector<int>& pts = polygon.points[l];
+    const int k = polygon.of_id[x].second;
+    const int s = wrap(pts[(k + 1) % pts.size()] - pts[k], n);
+    return s == 0 ? n : s;
+  }
+
   // Direction in which the side x -> y leaves x: along the boundary for a piece, along
   // the chord for a cut.
   Vec3 leaving(const CoarsePolygon& polygon, int x, int y) const {
@@ -356,7 +371,18 @@ class Decomposer {
         if (!polygon.is_piece(x, y)) across[{std::min(x, y), std::max(x, y)}].push_back(t);
       }
     }
-    struct Pair { double quality; int t1, t2; std::vector<int> corners; };
+    // A triangle with a one-segment boundary piece would have to be meshed with a
+    // corner added on a straight side (a 180-degree quad corner): it is paired first,
+    // within a wider angle window, so that the piece becomes a side of a four-sided
+    // patch (which takes a one-edge side as it is).
+    std::vector<char> needs_pair(triangles.size(), 0);
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      for (int i = 0; i < 3; ++i) {
+        const int x = triangles[t][i], y = triangles[t][(i + 1) % 3];
+        if (polygon.is_piece(x, y) && piece_segments(polygon, x) == 1) needs_pair[t] = 1;
+      }
+    }
+    struct Pair { bool urgent; double quality; int t1, t2; std::vector<int> corners; };
     std::vector<Pair> pairs;
     for (const auto& [edge, users] : across) {
       if (users.size() != 2) continue;
@@ -367,10 +393,13 @@ class Decomposer {
       int d = -1;
       for (int v : t2) if (v != a && v != b) d = v;
       const std::vector<int> corners{a, d, b, c};
-      const double q = corner_quality(polygon, corners, kPairAngleMin);
-      if (q > 0) pairs.push_back({q, users[0], users[1], corners});
+      const bool urgent = needs_pair[users[0]] || needs_pair[users[1]];
+      const double q = corner_quality(polygon, corners, urgent ? kUrgentPairAngleMin : kPairAngleMin);
+      if (q > 0) pairs.push_back({urgent, q, users[0], users[1], corners});
     }
-    std::stable_sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) { return x.quality > y.quality; });
+    std::stable_sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) {
+      return x.urgent != y.urgent ? x.urgent : x.quality > y.quality;
+    });
     std::vector<char> used(triangles.size(), 0);
     std::vector<std::vector<int>> patches;
     for (const Pair& p : pairs) {

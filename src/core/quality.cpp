@@ -72,12 +72,30 @@ QualitySummary summarize_quality(const std::vector<Vec3>& nodes, const std::vect
     const double j = scaled_jacobian(p, normal);
     lee_lo.add(lee_lo_quality(p, normal));
     jacobian.add(j);
+    double shortest = INFINITY, longest = 0;
+    for (int i = 0; i < 4; ++i) {
+      const double edge = distance(p[i], p[(i + 1) % 4]);
+      shortest = std::min(shortest, edge);
+      longest = std::max(longest, edge);
+    }
+    if (shortest < kCollapsedEdgeRatio * longest) ++summary.collapsed;
     if (j < -kInvertedBelow) ++summary.inverted;
     else if (j <= kDegenerateUpTo) ++summary.degenerate;
   }
   summary.lee_lo = lee_lo.stats();
   summary.scaled_jacobian = jacobian.stats();
   return summary;
+}
+
+void use_scaled_jacobians(QualitySummary& summary, const std::vector<double>& per_quad) {
+  Accumulator jacobian;
+  summary.inverted = summary.degenerate = 0;
+  for (double j : per_quad) {
+    jacobian.add(j);
+    if (j < -kInvertedBelow) ++summary.inverted;
+    else if (j <= kDegenerateUpTo) ++summary.degenerate;
+  }
+  summary.scaled_jacobian = jacobian.stats();
 }
 
 }  // namespace tquad

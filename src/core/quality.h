@@ -30,11 +30,16 @@ struct QualityStats {
 constexpr double kInvertedBelow = 1e-9;
 constexpr double kDegenerateUpTo = 1e-6;
 
+// A quad whose shortest edge is under this fraction of its longest is a triangle in
+// effect: its corners' scaled Jacobians can all look fine, so it is counted apart.
+constexpr double kCollapsedEdgeRatio = 1e-3;
+
 struct QualitySummary {
   QualityStats lee_lo;
   QualityStats scaled_jacobian;
   long long inverted = 0;    // quads with a scaled Jacobian below -kInvertedBelow
   long long degenerate = 0;  // quads with a scaled Jacobian in [-kInvertedBelow, kDegenerateUpTo]
+  long long collapsed = 0;   // quads with an edge under kCollapsedEdgeRatio of their longest
 };
 
 // Normal used to sign the metrics: `reference` for every quad when given (a planar
@@ -42,6 +47,11 @@ struct QualitySummary {
 QualitySummary summarize_quality(const QuadMesh& mesh, const std::optional<Vec3>& reference);
 QualitySummary summarize_quality(const std::vector<Vec3>& nodes, const std::vector<Quad>& quads,
                                  const std::optional<Vec3>& reference);
+
+// Replaces the scaled-Jacobian statistics and the inverted and degenerate counts by
+// those of per-quad values measured elsewhere (on a curved surface, each corner
+// against the surface normal there).
+void use_scaled_jacobians(QualitySummary& summary, const std::vector<double>& per_quad);
 
 
 }  // namespace tquad

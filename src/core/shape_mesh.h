@@ -28,6 +28,10 @@ struct ShapeMesh {
   std::vector<Quad> quads;
   std::vector<FaceMesh> faces;  // in quad order: face k owns quads [first, first + count)
   std::vector<RefusedFace> refused_faces;
+  // Per quad (or empty): the scaled Jacobian with each corner signed by the surface's
+  // outer normal at that corner (face_mesher.h, check_on_surface), the one measure of
+  // inverted quads on curved faces; the quality report takes it when present.
+  std::vector<double> scaled_jacobian;
 };
 
 // One boundary region as a shape of one face (face 0), moving the mesh's arrays.

@@ -23,6 +23,7 @@ nlohmann::ordered_json mesh_report_json(const ShapeMesh& mesh, const QualitySumm
   q["scaled_jacobian"] = quality_stats_json(quality.scaled_jacobian);
   q["inverted"] = quality.inverted;
   q["degenerate"] = quality.degenerate;
+  q["collapsed"] = quality.collapsed;
   report["quality"] = q;
   nlohmann::ordered_json faces = nlohmann::ordered_json::array();
   for (const FaceMesh& f : mesh.faces) {

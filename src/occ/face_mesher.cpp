@@ -124,28 +124,52 @@ FaceMeshResult mesh_in_space(const TopoDS_Face& face, const FaceBoundary& b, con
 void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
                       const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
                       FaceMeshResult& out) {
-  const std::vector<Quad>& quads = out.quads;
   const BRepAdaptor_Surface surface(face);
-  long long inverted = 0;
-  double worst = 1.0;
-  for (const Quad& q : quads) {
-    Vec3 centre;
-    for (NodeId n : q) centre += 0.25 * param[n];
-    if (polar) centre = polar_to_uv(*polar, centre);
+  const bool reversed = face.Orientation() == TopAbs_REVERSED;
+  // The outer normal at parameters (u, v); zero where the surface is singular.
+  auto outer_normal = [&](const Vec3& uv) {
     gp_Pnt p;
     gp_Vec du, dv;
-    surface.D1(centre.x, centre.y, p, du, dv);
-    gp_Vec outer = du.Crossed(dv);
-    if (face.Orientation() == TopAbs_REVERSED) outer.Reverse();
-    const Vec3 normal{outer.X(), outer.Y(), outer.Z()};
+    surface.D1(uv.x, uv.y, p, du, dv);
+    gp_Vec n = du.Crossed(dv);
+    // Singular there (a pole, a collapsed side): the direction is rounding noise.
+    if (singular_normal(du, dv)) return Vec3{};
+    if (reversed) n.Reverse();
+    return Vec3{n.X(), n.Y(), n.Z()};
+  };
+  // Each corner is checked against the normal at its own node, so a quad warped on a
+  // strongly curved face is judged where its corners are; where the surface is
+  // singular at the node (a pole), the normal at the quad's centre stands in.
+  std::vector<Vec3> normals(param.size());
+  for (std::size_t i = 0; i < param.size(); ++i) normals[i] = outer_normal(polar ? polar_to_uv(*polar, param[i]) : param[i]);
+  long long inverted = 0;
+  double worst = 1.0;
+  out.scaled_jacobian.clear();
+  out.scaled_jacobian.reserve(out.quads.size());
+  for (const Quad& q : out.quads) {
+    std::optional<Vec3> centre_normal;
     bool bad = false;
+    double quad_worst = 1.0;
     for (int i = 0; i < 4; ++i) {
+      Vec3 normal = normals[q[i]];
+      if (norm(normal) == 0) {
+        if (!centre_normal) {
+          Vec3 centre;
+          for (NodeId n : q) centre += 0.25 * param[n];
+          centre_normal = outer_normal(polar ? polar_to_uv(*polar, centre) : centre);
+        }
+        normal = *centre_normal;
+        // Singular all over the quad: its own normal (the diagonals' cross product).
+        if (norm(normal) == 0) normal = cross(xyz[q[2]] - xyz[q[0]], xyz[q[3]] - xyz[q[1]]);
+      }
       const Vec3 a = xyz[q[(i + 1) % 4]] - xyz[q[i]], b = xyz[q[(i + 3) % 4]] - xyz[q[i]];
       const double scale = norm(a) * norm(b) * norm(normal);
       const double jacobian = scale > 0 ? dot(cross(a, b), normal) / scale : -1.0;
-      worst = std::min(worst, jacobian);
+      quad_worst = std::min(quad_worst, jacobian);
       bad = bad || jacobian < -kInvertedBelow;
     }
+    worst = std::min(worst, quad_worst);
+    out.scaled_jacobian.push_back(quad_worst);
     inverted += bad ? 1 : 0;
   }
   out.inverted = inverted;

@@ -8,6 +8,9 @@
 // node is projected onto the surface, warm-started from the previous node's (u, v).
 #pragma once
 
+#include <gp_Vec.hxx>
+
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,14 +31,25 @@ struct FaceMeshResult {
   bool used_projection = false;  // the 3D fallback was used
   long long inverted = 0;        // quads still inverted after repair
   double worst_corner = 1.0;     // lowest scaled Jacobian against the outer normal
+  std::vector<double> scaled_jacobian;  // per quad, its corners signed by the outer normal
   double template_seconds = 0;   // building the template mesh (core)
   double placement_seconds = 0;  // putting its interior nodes on the surface
 };
 
-// Counts the quads with a corner inverted against the face's outer normal at the
-// quad's centre, and the lowest scaled Jacobian, into out.inverted / out.worst_corner.
+// Counts the quads with a corner inverted against the face's outer normal at that
+// corner's node (at the quad's centre where the node is a pole), and the lowest
+// corner scaled Jacobian so signed, into out.inverted / out.worst_corner.
 // param: each local node's mesh coordinates, (u, v) or polar (x, y) when `polar`;
 // xyz: each local node's position.
+// Whether the surface's normal direction at a point is not to be trusted: S_u and
+// S_v within about half a degree of parallel (the collapsed corner of a Bezier patch:
+// 1e-3 measured on capot.brep), or one of them vanishing against the other (a pole:
+// 4e-15 measured on U_Joint_2.stp).
+inline bool singular_normal(const gp_Vec& du, const gp_Vec& dv) {
+  const double a = du.Magnitude(), b = dv.Magnitude();
+  return du.Crossed(dv).Magnitude() <= 1e-2 * a * b || std::min(a, b) <= 1e-9 * std::max(a, b);
+}
+
 void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
                       const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
                       FaceMeshResult& out);

@@ -280,6 +280,7 @@ ShapeMeshResult mesh_shape(const TopoDS_Shape& shape, const ShapeMeshOptions& op
       for (int k = 0; k < 4; ++k) g[k] = q[k] < loop_size ? shared[q[k]] : base + (q[k] - loop_size);
       mesh.quads.push_back(g);
     }
+    mesh.scaled_jacobian.insert(mesh.scaled_jacobian.end(), o.mesh.scaled_jacobian.begin(), o.mesh.scaled_jacobian.end());
     mesh.faces.push_back({f, o.mesh.template_tree, first, static_cast<std::int64_t>(o.mesh.quads.size())});
     result.projected_faces += o.mesh.used_projection ? 1 : 0;
     result.inverted += o.mesh.inverted;

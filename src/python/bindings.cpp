@@ -35,6 +35,7 @@ py::dict quality_dict(const QualitySummary& q) {
   d["scaled_jacobian"] = stats_dict(q.scaled_jacobian);
   d["inverted"] = q.inverted;
   d["degenerate"] = q.degenerate;
+  d["collapsed"] = q.collapsed;
   return d;
 }
 
@@ -134,6 +135,7 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
                                                                         : read_shape(brep_text_or_path);
     result = mesh_shape(shape, options);
     quality = summarize_quality(result.mesh.nodes, result.mesh.quads, std::nullopt);
+    use_scaled_jacobians(quality, result.mesh.scaled_jacobian);
   }
   py::dict out = mesh_dict(result.mesh, quality);
   out["edge_size"] = result.size;
