@@ -142,7 +142,7 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
   // singular at the node (a pole), the normal at the quad's centre stands in.
   std::vector<Vec3> normals(param.size());
   for (std::size_t i = 0; i < param.size(); ++i) normals[i] = outer_normal(polar ? polar_to_uv(*polar, param[i]) : param[i]);
-  long long inverted = 0;
+  long long inverted = 0, collapsed = 0;
   double worst = 1.0;
   out.scaled_jacobian.clear();
   out.scaled_jacobian.reserve(out.quads.size());
@@ -168,11 +168,19 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
       quad_worst = std::min(quad_worst, jacobian);
       bad = bad || jacobian < -kInvertedBelow;
     }
+    double shortest = INFINITY, longest = 0;
+    for (int i = 0; i < 4; ++i) {
+      const double edge = distance(xyz[q[i]], xyz[q[(i + 1) % 4]]);
+      shortest = std::min(shortest, edge);
+      longest = std::max(longest, edge);
+    }
+    collapsed += shortest < kCollapsedEdgeRatio * longest ? 1 : 0;
     worst = std::min(worst, quad_worst);
     out.scaled_jacobian.push_back(quad_worst);
     inverted += bad ? 1 : 0;
   }
   out.inverted = inverted;
+  out.collapsed = collapsed;
   out.worst_corner = worst;
 }
 

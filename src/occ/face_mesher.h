@@ -30,6 +30,7 @@ struct FaceMeshResult {
   std::string template_tree;
   bool used_projection = false;  // the 3D fallback was used
   long long inverted = 0;        // quads still inverted after repair
+  long long collapsed = 0;       // quads with an edge under kCollapsedEdgeRatio of their longest
   double worst_corner = 1.0;     // lowest scaled Jacobian against the outer normal
   std::vector<double> scaled_jacobian;  // per quad, its corners signed by the outer normal
   double template_seconds = 0;   // building the template mesh (core)

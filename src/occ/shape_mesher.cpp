@@ -93,9 +93,12 @@ struct FaceOutcome {
   FaceMeshResult mesh;
 };
 
-// Whether mesh a beats mesh b: fewer inverted quads, then a better worst corner.
+// Whether mesh a beats mesh b: fewer inverted quads, then fewer collapsed ones
+// (triangles in effect), then a better worst corner.
 bool better(const FaceMeshResult& a, const FaceMeshResult& b) {
-  return a.inverted < b.inverted || (a.inverted == b.inverted && a.worst_corner > b.worst_corner);
+  if (a.inverted != b.inverted) return a.inverted < b.inverted;
+  if (a.collapsed != b.collapsed) return a.collapsed < b.collapsed;
+  return a.worst_corner > b.worst_corner;
 }
 
 // A face meshed whole (templates on its own corners, or the one-hole O-grid) whose
@@ -141,7 +144,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     }
     decompose = !user_corners;  // the user's corners are an instruction
   }
-  if (decompose && (!best || best->inverted > 0 || best->worst_corner < kGoodEnoughCorner)) {
+  if (decompose && (!best || best->inverted > 0 || best->collapsed > 0 || best->worst_corner < kGoodEnoughCorner)) {
     try {
       keep(mesh_face_decomposed(index.face(f), f, boundary, nodes, index.vertex_count(), size, options.templates));
     } catch (const InputError& e) {
