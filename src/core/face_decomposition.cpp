@@ -170,6 +170,35 @@ struct CoarsePolygon {
   }
 };
 
+}  // namespace
+
+std::vector<std::pair<int, int>> cut_obstacles(const PlanarDomain& d, int lx, int px, int ly, int py) {
+  const auto point = [&](int l, int i) -> const Vec3& { return d.loops[l].points[i]; };
+  const Vec3 &a = point(lx, px), &b = point(ly, py);
+  std::vector<std::pair<int, int>> out;
+  for (int l = 0; l < d.loop_count(); ++l) {
+    const int n = static_cast<int>(d.loops[l].points.size());
+    for (int s = 0; s < n; ++s) {
+      const int s1 = (s + 1) % n;
+      const bool touches_x = l == lx && (s == px || s1 == px);
+      const bool touches_y = l == ly && (s == py || s1 == py);
+      if (touches_x || touches_y) continue;
+      if (segments_meet(a, b, point(l, s), point(l, s1))) out.push_back({l, s});
+    }
+  }
+  if (!out.empty()) return out;
+  for (const auto& [l, p, from, to] : {std::tuple{lx, px, a, b}, std::tuple{ly, py, b, a}}) {
+    const int n = static_cast<int>(d.loops[l].points.size());
+    if (!inside_corner(point(l, wrap(p - 1, n)), from, point(l, wrap(p + 1, n)), to)) {
+      out.push_back({l, p});
+      out.push_back({l, wrap(p - 1, n)});
+    }
+  }
+  return out;
+}
+
+namespace {
+
 class Decomposer {
  public:
   explicit Decomposer(const PlanarDomain& domain) : d_(domain) {
@@ -288,27 +317,15 @@ class Decomposer {
                  std::vector<std::pair<int, int>>& sliver) const {
     const int lx = polygon.loop(x), ly = polygon.loop(y);
     const int px = polygon.point(x), py = polygon.point(y);
-    const Vec3 &a = point(lx, px), &b = point(ly, py);
-    const std::size_t before = blocked.size();
-    for (int l = 0; l < d_.loop_count(); ++l) {
-      const int n = loop_size(l);
-      for (int s = 0; s < n; ++s) {
-        const int s1 = (s + 1) % n;
-        const bool touches_x = l == lx && (s == px || s1 == px);
-        const bool touches_y = l == ly && (s == py || s1 == py);
-        if (touches_x || touches_y) continue;
-        if (segments_meet(a, b, point(l, s), point(l, s1))) blocked.push_back({l, s});
-      }
+    const std::vector<std::pair<int, int>> obstacles = cut_obstacles(d_, lx, px, ly, py);
+    if (!obstacles.empty()) {
+      blocked.insert(blocked.end(), obstacles.begin(), obstacles.end());
+      return;
     }
-    if (blocked.size() != before) return;
+    const Vec3 &a = point(lx, px), &b = point(ly, py);
     for (const auto& [l, p, from, to] : {std::tuple{lx, px, a, b}, std::tuple{ly, py, b, a}}) {
       const int n = loop_size(l);
       const Vec3 &prev = point(l, wrap(p - 1, n)), &next = point(l, wrap(p + 1, n));
-      if (!inside_corner(prev, from, next, to)) {
-        blocked.push_back({l, p});
-        blocked.push_back({l, wrap(p - 1, n)});
-        continue;
-      }
       if (angle_between(next - from, to - from) < kMinCutAngle) sliver.push_back({l, p});
       if (angle_between(prev - from, to - from) < kMinCutAngle) sliver.push_back({l, wrap(p - 1, n)});
     }

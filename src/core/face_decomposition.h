@@ -24,6 +24,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/planar_domain.h"
@@ -69,6 +70,12 @@ FaceDecomposition decompose_domain(const PlanarDomain& domain);
 // holds cut c's nodes from `from` to `to`.
 std::vector<int> side_nodes(const PlanarDomain& domain, const FaceDecomposition& decomposition,
                             const PatchSide& side, const std::vector<std::vector<int>>& cut_nodes);
+
+// The boundary segments (loop, segment from point segment to segment + 1) that the
+// straight cut from point px of loop lx to point py of loop ly meets away from its
+// ends; when it meets none but leaves the domain at an end, the two segments there.
+// Empty: the cut lies inside the domain.
+std::vector<std::pair<int, int>> cut_obstacles(const PlanarDomain& domain, int lx, int px, int ly, int py);
 
 // Segments of a boundary piece.
 int piece_segments(const PlanarDomain& domain, const BoundaryPiece& piece);

@@ -5,15 +5,22 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
+#include "core/cut_intervals.h"
 #include "core/decomposed_mesher.h"
 #include "core/input_error.h"
+#include "core/o_grid.h"
 
 namespace tquad {
 
 namespace {
 
 Vec3 to_vec3(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 // (u, v) <-> chart: x = mirror * su * u, y = sv * v.
 struct Chart {
@@ -48,73 +55,120 @@ Chart chart_for(const BRepAdaptor_Surface& surface, const std::vector<Vec3>& uv)
   return c;
 }
 
-DomainLoop chart_loop(const Chart& chart, const std::vector<Vec3>& uv, const std::vector<NodeId>& ids,
-                      int vertex_nodes) {
-  DomainLoop loop;
-  for (std::size_t i = 0; i < uv.size(); ++i) {
-    loop.points.push_back(chart.to_chart(uv[i]));
-    loop.vertex.push_back(ids[i] < vertex_nodes);
+// A face's domain in its chart, with the shared node and (u, v) of each domain point.
+class FaceChart {
+ public:
+  FaceChart(const TopoDS_Face& face, int face_index, const FaceBoundary& b, const std::vector<Vec3>& nodes,
+            int vertex_nodes)
+      : face_(face), name_("face " + std::to_string(face_index)), b_(b), nodes_(nodes), surface_(face) {
+    if (b.has_degenerate_edge || b.polar) throw InputError(name_ + " has a pole; it is not decomposed");
+    chart_ = chart_for(surface_, b.uv);
+    if (signed_uv_area(b.uv) < 0) chart_.mirror = -1;
+    add_loop(b.uv, b.nodes, vertex_nodes, false);
+    for (const NodeLoop& hole : b.holes) add_loop(hole.uv, hole.nodes, vertex_nodes, true);
   }
-  return loop;
-}
+
+  const PlanarDomain& domain() const { return domain_; }
+  const std::string& name() const { return name_; }
+
+  // The mesh of a decomposition of the domain, placed on the surface and checked.
+  FaceMeshResult mesh(const FaceDecomposition& decomposition, double edge_size, const MeshOptions& options) const {
+    const auto start = std::chrono::steady_clock::now();
+    const QuadMesh mesh = mesh_decomposed_domain(domain_, decomposition,
+                                                 assign_cut_intervals(domain_, decomposition, edge_size), options);
+    FaceMeshResult out;
+    out.boundary_nodes = boundary_nodes_;
+    out.quads = mesh.quads;
+    if (!runs_counter_clockwise(b_, face_)) for (Quad& q : out.quads) std::swap(q[1], q[3]);
+    out.template_tree = mesh.template_tree;
+    out.template_seconds = seconds_since(start);
+
+    const auto placing = std::chrono::steady_clock::now();
+    const std::size_t n = boundary_nodes_.size();
+    std::vector<Vec3> uv = uv_;
+    out.interior.reserve(mesh.nodes.size() - n);
+    for (std::size_t i = n; i < mesh.nodes.size(); ++i) {
+      uv.push_back(chart_.to_uv(mesh.nodes[i]));
+      out.interior.push_back(to_vec3(surface_.Value(uv.back().x, uv.back().y)));
+    }
+    out.placement_seconds = seconds_since(placing);
+    std::vector<Vec3> xyz;
+    xyz.reserve(mesh.nodes.size());
+    for (NodeId id : boundary_nodes_) xyz.push_back(nodes_[id]);
+    xyz.insert(xyz.end(), out.interior.begin(), out.interior.end());
+    check_on_surface(face_, uv, std::nullopt, xyz, out);
+    return out;
+  }
+
+ private:
+  // Holes run clockwise in the chart, the outer loop counter-clockwise.
+  void add_loop(std::vector<Vec3> uv, std::vector<NodeId> ids, int vertex_nodes, bool hole) {
+    DomainLoop loop;
+    for (std::size_t i = 0; i < uv.size(); ++i) {
+      loop.points.push_back(chart_.to_chart(uv[i]));
+      loop.vertex.push_back(ids[i] < vertex_nodes);
+    }
+    if (hole && twice_signed_area(loop.points) > 0) {
+      std::reverse(loop.points.begin(), loop.points.end());
+      std::reverse(loop.vertex.begin(), loop.vertex.end());
+      std::reverse(ids.begin(), ids.end());
+      std::reverse(uv.begin(), uv.end());
+    }
+    domain_.loops.push_back(std::move(loop));
+    boundary_nodes_.insert(boundary_nodes_.end(), ids.begin(), ids.end());
+    uv_.insert(uv_.end(), uv.begin(), uv.end());
+  }
+
+  const TopoDS_Face& face_;
+  std::string name_;
+  const FaceBoundary& b_;
+  const std::vector<Vec3>& nodes_;
+  BRepAdaptor_Surface surface_;
+  Chart chart_;
+  PlanarDomain domain_;
+  std::vector<NodeId> boundary_nodes_;
+  std::vector<Vec3> uv_;
+};
 
 }  // namespace
+
+bool better_face_mesh(const FaceMeshResult& a, const FaceMeshResult& b) {
+  if (a.inverted != b.inverted) return a.inverted < b.inverted;
+  if (a.collapsed != b.collapsed) return a.collapsed < b.collapsed;
+  return a.worst_corner > b.worst_corner;
+}
 
 FaceMeshResult mesh_face_decomposed(const TopoDS_Face& face, int face_index, const FaceBoundary& b,
                                     const std::vector<Vec3>& nodes, int vertex_nodes, double edge_size,
                                     const MeshOptions& options) {
-  const std::string name = "face " + std::to_string(face_index);
-  if (b.has_degenerate_edge || b.polar) throw InputError(name + " has a pole; it is not decomposed");
-  const auto start = std::chrono::steady_clock::now();
-  const BRepAdaptor_Surface surface(face);
-  Chart chart = chart_for(surface, b.uv);
-  if (signed_uv_area(b.uv) < 0) chart.mirror = -1;
-
-  FaceMeshResult out;
-  PlanarDomain domain;
-  std::vector<Vec3> uv = b.uv;
-  domain.loops.push_back(chart_loop(chart, b.uv, b.nodes, vertex_nodes));
-  out.boundary_nodes = b.nodes;
-  for (const NodeLoop& hole : b.holes) {
-    DomainLoop loop = chart_loop(chart, hole.uv, hole.nodes, vertex_nodes);
-    std::vector<NodeId> ids = hole.nodes;
-    std::vector<Vec3> hole_uv = hole.uv;
-    if (twice_signed_area(loop.points) > 0) {  // holes run clockwise in the chart
-      std::reverse(loop.points.begin(), loop.points.end());
-      std::reverse(loop.vertex.begin(), loop.vertex.end());
-      std::reverse(ids.begin(), ids.end());
-      std::reverse(hole_uv.begin(), hole_uv.end());
-    }
-    domain.loops.push_back(std::move(loop));
-    out.boundary_nodes.insert(out.boundary_nodes.end(), ids.begin(), ids.end());
-    uv.insert(uv.end(), hole_uv.begin(), hole_uv.end());
-  }
-
-  QuadMesh mesh;
+  const FaceChart chart(face, face_index, b, nodes, vertex_nodes);
   try {
-    mesh = mesh_planar_domain(domain, edge_size, options);
+    return chart.mesh(decompose_domain(chart.domain()), edge_size, options);
   } catch (const InputError& e) {
-    throw InputError(name + " (decomposed into patches): " + e.what());
+    throw InputError(chart.name() + " (decomposed into patches): " + e.what());
   }
-  out.quads = mesh.quads;
-  if (!runs_counter_clockwise(b, face)) for (Quad& q : out.quads) std::swap(q[1], q[3]);
-  out.template_tree = mesh.template_tree;
-  out.template_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
-  const auto placing = std::chrono::steady_clock::now();
-  const std::size_t n = out.boundary_nodes.size();
-  out.interior.reserve(mesh.nodes.size() - n);
-  for (std::size_t i = n; i < mesh.nodes.size(); ++i) {
-    uv.push_back(chart.to_uv(mesh.nodes[i]));
-    out.interior.push_back(to_vec3(surface.Value(uv.back().x, uv.back().y)));
+FaceMeshResult mesh_face_o_grid(const TopoDS_Face& face, int face_index, const FaceBoundary& b,
+                                const std::vector<Vec3>& nodes, int vertex_nodes, double edge_size,
+                                const MeshOptions& options) {
+  constexpr int kPlaces = 8;
+  const FaceChart chart(face, face_index, b, nodes, vertex_nodes);
+  const int rim = chart.domain().loop_count() == 2 ? static_cast<int>(chart.domain().loops[1].points.size()) : 0;
+  std::optional<FaceMeshResult> best;
+  std::string problem = "no pair of cuts from the hole to the outer loop stays inside the face";
+  for (int t = 0; t < std::min(kPlaces, rim); ++t) {
+    const std::optional<FaceDecomposition> halves = o_grid_decomposition(chart.domain(), t * rim / std::min(kPlaces, rim));
+    if (!halves) continue;
+    try {
+      FaceMeshResult r = chart.mesh(*halves, edge_size, options);
+      if (!best || better_face_mesh(r, *best)) best = std::move(r);
+    } catch (const InputError& e) {
+      problem = e.what();
+    }
   }
-  out.placement_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - placing).count();
-  std::vector<Vec3> xyz;
-  xyz.reserve(mesh.nodes.size());
-  for (NodeId id : out.boundary_nodes) xyz.push_back(nodes[id]);
-  xyz.insert(xyz.end(), out.interior.begin(), out.interior.end());
-  check_on_surface(face, uv, std::nullopt, xyz, out);
-  return out;
+  if (!best) throw InputError(chart.name() + " (with a hole): " + problem);
+  return std::move(*best);
 }
 
 }  // namespace tquad

@@ -1,5 +1,5 @@
-// mesh_face_decomposed: a face of any outline with any number of holes, meshed by the
-// face decomposition of core (decomposed_mesher.h) in a chart of its (u, v) space.
+// Faces meshed by a decomposition into patches (core's face_decomposition.h and
+// o_grid.h) in a chart of their (u, v) space.
 //
 // The chart is (u, v) scaled by the surface's mean first derivatives |S_u| and |S_v|
 // over the face (and mirrored when the outer loop runs clockwise in (u, v)), so that
@@ -17,10 +17,23 @@
 
 namespace tquad {
 
-// `vertex_nodes`: shared nodes below this id are CAD vertices. Throws InputError
-// (naming the face) for a face with a pole, or when the decomposition fails.
+// Any outline, any number of holes: the general decomposition. `vertex_nodes`: shared
+// nodes below this id are CAD vertices. Throws InputError (naming the face) for a
+// face with a pole, or when the decomposition fails.
 FaceMeshResult mesh_face_decomposed(const TopoDS_Face& face, int face_index, const FaceBoundary& boundary,
                                     const std::vector<Vec3>& nodes, int vertex_nodes, double edge_size,
                                     const MeshOptions& options);
+
+// One hole: the O-grid of two four-sided halves (o_grid.h). Eight places for the
+// first cut are tried around the rim; the mesh with the fewest inverted, then
+// collapsed quads, then the best worst corner is kept. The tree reads "D2[...]".
+// Throws InputError (naming the face) when no place gives a valid mesh.
+FaceMeshResult mesh_face_o_grid(const TopoDS_Face& face, int face_index, const FaceBoundary& boundary,
+                                const std::vector<Vec3>& nodes, int vertex_nodes, double edge_size,
+                                const MeshOptions& options);
+
+// Whether mesh a beats mesh b: fewer inverted quads, then fewer collapsed ones
+// (triangles in effect), then a better worst corner.
+bool better_face_mesh(const FaceMeshResult& a, const FaceMeshResult& b);
 
 }  // namespace tquad

@@ -16,7 +16,6 @@
 #include "occ/face_corners.h"
 #include "occ/face_decomposed.h"
 #include "occ/face_mesher.h"
-#include "occ/face_with_hole.h"
 #include "occ/shape_index.h"
 
 namespace tquad {
@@ -93,14 +92,6 @@ struct FaceOutcome {
   FaceMeshResult mesh;
 };
 
-// Whether mesh a beats mesh b: fewer inverted quads, then fewer collapsed ones
-// (triangles in effect), then a better worst corner.
-bool better(const FaceMeshResult& a, const FaceMeshResult& b) {
-  if (a.inverted != b.inverted) return a.inverted < b.inverted;
-  if (a.collapsed != b.collapsed) return a.collapsed < b.collapsed;
-  return a.worst_corner > b.worst_corner;
-}
-
 // A face meshed whole (templates on its own corners, or the one-hole O-grid) whose
 // worst corner reaches this keeps that mesh; below it, the face decomposition is
 // tried too and the better mesh kept.
@@ -108,7 +99,7 @@ constexpr double kGoodEnoughCorner = 0.3;
 
 // The face's mesh, the one place where the algorithm per face is chosen:
 //   - no hole: the templates on each corner choice (face_corners.h);
-//   - one hole: the O-grid cut through it (face_with_hole.h);
+//   - one hole: the O-grid of two halves (o_grid.h, face_decomposed.h);
 //   - more holes, or when the above leave inverted quads or a worst corner under
 //     kGoodEnoughCorner: the face decomposition (face_decomposed.h), any outline;
 //   - a disk around a pole: polar templates (no decomposition).
@@ -123,11 +114,11 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
   if (boundary.inner_wires > 0 && pole) throw InputError(name + " has a hole and a pole; not supported yet");
   bool decompose = !pole;
   auto keep = [&](FaceMeshResult&& r) {
-    if (!best || better(r, *best)) best = std::move(r);
+    if (!best || better_face_mesh(r, *best)) best = std::move(r);
   };
   if (boundary.inner_wires == 1) {
     try {
-      keep(mesh_face_with_hole(index.face(f), f, boundary, nodes, size, options.templates));
+      keep(mesh_face_o_grid(index.face(f), f, boundary, nodes, index.vertex_count(), size, options.templates));
     } catch (const std::exception& e) {  // the decomposition below is the other route
       refusal = e.what();
     }
