@@ -15,6 +15,7 @@
 #include "core/decomposed_mesher.h"
 #include "core/input_error.h"
 #include "core/mesh_validation.h"
+#include "core/o_grid.h"
 #include "core/quality.h"
 #include "domain_generators.h"
 
@@ -77,6 +78,28 @@ TEST(FaceDecomposition, LShapeIsCutAtItsReflexCorner) {
   EXPECT_GE(decomposition.cuts.size(), 1u);
   for (const DomainPatch& p : decomposition.patches) EXPECT_TRUE(p.sides.size() == 3 || p.sides.size() == 4);
   expect_valid(d, mesh_planar_domain(d, 0.25), "L shape");
+}
+
+TEST(FaceDecomposition, OGridOfARingIsTwoMappedHalves) {
+  // A 24-edge square around a 16-edge circle: every rim place gives two four-sided
+  // halves, outer piece opposite rim piece.
+  PlanarDomain d;
+  d.loops.push_back(polygon_loop({{-2, -2}, {2, -2}, {2, 2}, {-2, 2}}, 6));
+  d.loops.push_back(circle_hole({0, 0}, 1.0, 16));
+  for (int rim = 0; rim < 16; rim += 3) {
+    const std::optional<FaceDecomposition> halves = o_grid_decomposition(d, rim);
+    ASSERT_TRUE(halves.has_value()) << "rim point " << rim;
+    ASSERT_EQ(halves->patches.size(), 2u);
+    ASSERT_EQ(halves->cuts.size(), 2u);
+    for (const DomainPatch& p : halves->patches) EXPECT_EQ(p.sides.size(), 4u);
+    const QuadMesh mesh = mesh_decomposed_domain(d, *halves, assign_cut_intervals(d, *halves, 2.0 / 3), {});
+    expect_valid(d, mesh, "ring, rim point " + std::to_string(rim));
+    EXPECT_EQ(mesh.template_tree.substr(0, 2), "D2") << mesh.template_tree;
+  }
+  // No hole, or two: not an O-grid.
+  PlanarDomain plain;
+  plain.loops.push_back(d.loops[0]);
+  EXPECT_FALSE(o_grid_decomposition(plain, 0).has_value());
 }
 
 TEST(FaceDecomposition, EveryPatchTotalIsEvenAfterIntervalAssignment) {
