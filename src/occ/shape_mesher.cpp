@@ -4,18 +4,19 @@
 #include <Bnd_Box.hxx>
 #include <TopExp_Explorer.hxx>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <exception>
 #include <optional>
+#include <mutex>
 #include <thread>
 
 #include "core/input_error.h"
 #include "occ/edge_discretization.h"
 #include "occ/face_boundary.h"
 #include "occ/face_corners.h"
-#include "occ/face_decomposed.h"
-#include "occ/face_mesher.h"
+#include "occ/face_route.h"
 #include "occ/shape_index.h"
 
 namespace tquad {
@@ -72,105 +73,6 @@ void check_requested_corners(const ShapeIndex& index, const std::vector<char>& m
   }
 }
 
-// A face whose quads stay inverted.
-struct InvertedQuadsError : InputError {
-  InvertedQuadsError(const std::string& message, std::size_t quads) : InputError(message), quads(quads) {}
-  std::size_t quads;  // in the face's best mesh
-};
-
-// Finer edges may cure a face meshed with at most this many quads: a small curved face
-// of a few segments cannot be meshed on its surface however its nodes move. Larger
-// faces keep their counts (doubling them did not help in the parts measured, and it
-// grows the neighbours' meshes too).
-constexpr std::size_t kRefinableQuads = 16;
-
-struct FaceOutcome {
-  bool ok = false;
-  bool finer_edges_may_help = false;
-  std::string reason;
-  FaceBoundary boundary;
-  FaceMeshResult mesh;
-};
-
-// A face meshed whole (templates on its own corners, or the one-hole O-grid) whose
-// worst corner reaches this keeps that mesh; below it, the face decomposition is
-// tried too and the better mesh kept.
-constexpr double kGoodEnoughCorner = 0.3;
-
-// The face's mesh, the one place where the algorithm per face is chosen:
-//   - no hole: the templates on each corner choice (face_corners.h);
-//   - one hole: the O-grid of two halves (o_grid.h, face_decomposed.h);
-//   - more holes, or when the above leave inverted quads or a worst corner under
-//     kGoodEnoughCorner: the face decomposition (face_decomposed.h), any outline;
-//   - a disk around a pole: polar templates (no decomposition).
-// The best mesh is kept; inverted quads that remain refuse the face unless
-// allow_inverted (never a silent bad mesh).
-FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary& boundary,
-                              const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size) {
-  const std::string name = "face " + std::to_string(f);
-  std::optional<FaceMeshResult> best;
-  std::string refusal;
-  const bool pole = boundary.has_degenerate_edge || boundary.polar;
-  if (boundary.inner_wires > 0 && pole) throw InputError(name + " has a hole and a pole; not supported yet");
-  bool decompose = !pole;
-  auto keep = [&](FaceMeshResult&& r) {
-    if (!best || better_face_mesh(r, *best)) best = std::move(r);
-  };
-  if (boundary.inner_wires == 1) {
-    try {
-      keep(mesh_face_o_grid(index.face(f), f, boundary, nodes, index.vertex_count(), size, options.templates));
-    } catch (const std::exception& e) {  // the decomposition below is the other route
-      refusal = e.what();
-    }
-  } else if (boundary.inner_wires == 0) {
-    const auto requested = options.corners.find(f);
-    const bool user_corners = requested != options.corners.end();
-    for (const std::vector<int>& corners :
-         corner_choices(boundary, f, user_corners ? requested->second : std::vector<int>{})) {
-      try {
-        keep(mesh_face(index, f, boundary, corners, nodes, options.templates));
-      } catch (const std::exception& e) {  // an internal failure of one route is noted; others follow
-        refusal = e.what();
-      }
-    }
-    decompose = !user_corners;  // the user's corners are an instruction
-  }
-  if (decompose && (!best || best->inverted > 0 || best->collapsed > 0 || best->worst_corner < kGoodEnoughCorner)) {
-    try {
-      keep(mesh_face_decomposed(index.face(f), f, boundary, nodes, index.vertex_count(), size, options.templates));
-    } catch (const InputError& e) {
-      if (!best) refusal = e.what();
-    }
-  }
-  if (!best) throw InputError(refusal);
-  if (best->inverted > 0 && !options.allow_inverted) {
-    throw InvertedQuadsError(name + ": " + std::to_string(best->inverted) + " quads stay inverted after repair (" +
-                     best->template_tree.substr(0, 60) + ")", best->quads.size());
-  }
-  return std::move(*best);
-}
-
-FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<EdgeNodes>& edges,
-                          const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size) {
-  FaceOutcome outcome;
-  try {
-    outcome.boundary = face_boundary(index, f, edges, nodes);
-    if (is_disk_around_pole(outcome.boundary)) {
-      outcome.boundary = around_pole(outcome.boundary, index.face(f), f, nodes);
-    }
-    outcome.mesh = best_face_mesh(index, f, outcome.boundary, nodes, options, size);
-    outcome.ok = true;
-  } catch (const InvertedQuadsError& e) {
-    outcome.reason = e.what();
-    outcome.finer_edges_may_help = e.quads <= kRefinableQuads;
-  } catch (const InputError& e) {
-    outcome.reason = e.what();
-  } catch (const std::exception& e) {
-    outcome.reason = std::string("face ") + std::to_string(f) + ": internal failure: " + e.what();
-  }
-  return outcome;
-}
-
 // Removes the nodes no quad uses (vertices and edge nodes of faces not meshed or
 // refused, seam nodes of refused faces), keeping the others in order.
 void drop_unused_nodes(ShapeMesh& mesh) {
@@ -201,88 +103,155 @@ void run_parallel(int count, int threads, const Job& job) {
   for (std::thread& w : workers) w.join();
 }
 
+// The pipeline's state, stage after stage (as OpenCASCADE's IMeshTools context):
+// each stage reads what the ones before it left and fills its own part.
+class ShapeMeshContext {
+ public:
+  ShapeMeshContext(const TopoDS_Shape& shape, const ShapeMeshOptions& options)
+      : shape_(shape), options_(options), index_(shape) {}
+
+  ShapeMeshResult run() {
+    stage("index", [&] { index_faces(); });
+    // Small faces whose quads stay inverted get their edges' counts doubled and the
+    // shape is meshed again (at most kRefinements times).
+    constexpr int kRefinements = 2;
+    for (int round = 0;; ++round) {
+      stage("assign intervals", [&] { assign_intervals(); });
+      stage("discretize edges", [&] { discretize(round == 0); });
+      stage("mesh faces", [&] { mesh_faces(); });
+      if (round >= kRefinements || !refine_edges_of_inverted_faces()) break;
+      ++result_.refinement_rounds;
+    }
+    stage("assemble", [&] { assemble(); });
+    return std::move(result_);
+  }
+
+ private:
+  template <typename Work>
+  void stage(const char* name, const Work& work) {
+    throw_if_cancelled();
+    report(name, 0, 1);
+    work();
+    throw_if_cancelled();
+    report(name, 1, 1);
+  }
+  void report(const char* name, int done, int total) {
+    if (!options_.progress) return;
+    const std::lock_guard<std::mutex> lock(progress_mutex_);
+    options_.progress(MeshProgress{name, done, total});
+  }
+  bool cancelled() const { return options_.cancel && options_.cancel->load(); }
+  void throw_if_cancelled() const {
+    if (cancelled()) throw MeshCancelled("meshing cancelled");
+  }
+
+  // Stage "index": faces to mesh, the target size, and the edges they need.
+  void index_faces() {
+    meshed_ = meshed_faces(index_, options_.faces);
+    result_.size = options_.size > 0 ? options_.size : default_size(shape_);
+    sized_ = edge_segment_counts(index_, result_.size, lengths_);
+    needed_.assign(index_.edge_count(), 0);
+    for (int f = 0; f < index_.face_count(); ++f) {
+      if (!meshed_[f]) continue;
+      for (TopExp_Explorer it(index_.face(f), TopAbs_EDGE); it.More(); it.Next()) needed_[index_.edge_index(it.Current())] = 1;
+    }
+    minimum_.assign(index_.edge_count(), 0);
+  }
+
+  // Stage "assign intervals": every edge's count (size, curvature, refinement), then
+  // every meshed face's total made even. Cuts inside faces get theirs with the face.
+  void assign_intervals() {
+    segments_ = sized_;
+    for (int e = 0; e < index_.edge_count(); ++e) segments_[e] = needed_[e] ? std::max(segments_[e], minimum_[e]) : 0;
+    result_.changes = assign_even_intervals(index_, meshed_, lengths_, result_.size, segments_);
+  }
+
+  // Stage "discretize edges": every edge once, shared by its faces.
+  void discretize(bool first) {
+    result_.mesh.nodes.clear();
+    edges_ = discretize_edges(index_, segments_, result_.mesh.nodes);
+    if (first) check_requested_corners(index_, meshed_, options_.corners, edges_, result_.mesh.nodes);
+  }
+
+  // Stage "mesh faces": each face by its route (face_route.h), in parallel; progress
+  // counts faces done, and a cancel stops the workers before their next face.
+  void mesh_faces() {
+    outcomes_.assign(index_.face_count(), FaceOutcome{});
+    const int total = static_cast<int>(std::count(meshed_.begin(), meshed_.end(), 1));
+    std::atomic<int> done{0};
+    run_parallel(index_.face_count(), options_.threads, [&](int f) {
+      if (!meshed_[f] || cancelled()) return;
+      outcomes_[f] = mesh_one_face(index_, f, edges_, result_.mesh.nodes, options_, result_.size);
+      report("mesh faces", ++done, total);
+    });
+  }
+
+  bool refine_edges_of_inverted_faces() {
+    bool refine = false;
+    for (int f = 0; f < index_.face_count(); ++f) {
+      if (!meshed_[f] || !outcomes_[f].finer_edges_may_help) continue;
+      refine = true;
+      for (TopExp_Explorer it(index_.face(f), TopAbs_EDGE); it.More(); it.Next()) {
+        const int e = index_.edge_index(it.Current());
+        minimum_[e] = std::max(minimum_[e], 2 * segments_[e]);
+      }
+    }
+    return refine;
+  }
+
+  // Stage "assemble": the refusal policy, then the faces' quads and interior nodes in
+  // face order (interior nodes after all edge nodes), whatever the thread count.
+  void assemble() {
+    ShapeMesh& mesh = result_.mesh;
+    for (int f = 0; f < index_.face_count(); ++f) {
+      if (meshed_[f] && !outcomes_[f].ok) mesh.refused_faces.push_back({f, outcomes_[f].reason});
+    }
+    if (!mesh.refused_faces.empty() && !options_.keep_going) {
+      std::string text = std::to_string(mesh.refused_faces.size()) + " face(s) refused: ";
+      for (std::size_t i = 0; i < mesh.refused_faces.size(); ++i) {
+        text += (i ? "; " : "") + mesh.refused_faces[i].reason;
+      }
+      throw InputError(text + " (--keep-going meshes the other faces)");
+    }
+    for (int f = 0; f < index_.face_count(); ++f) {
+      if (!meshed_[f] || !outcomes_[f].ok) continue;
+      const FaceMeshResult& m = outcomes_[f].mesh;
+      const std::vector<NodeId>& shared = m.boundary_nodes;
+      const NodeId loop_size = static_cast<NodeId>(shared.size());
+      const NodeId base = static_cast<NodeId>(mesh.nodes.size());
+      mesh.nodes.insert(mesh.nodes.end(), m.interior.begin(), m.interior.end());
+      const auto first = static_cast<std::int64_t>(mesh.quads.size());
+      for (const Quad& q : m.quads) {
+        Quad g;
+        for (int k = 0; k < 4; ++k) g[k] = q[k] < loop_size ? shared[q[k]] : base + (q[k] - loop_size);
+        mesh.quads.push_back(g);
+      }
+      mesh.scaled_jacobian.insert(mesh.scaled_jacobian.end(), m.scaled_jacobian.begin(), m.scaled_jacobian.end());
+      mesh.faces.push_back({f, m.template_tree, first, static_cast<std::int64_t>(m.quads.size())});
+      result_.projected_faces += m.used_projection ? 1 : 0;
+      result_.inverted += m.inverted;
+      result_.template_seconds += m.template_seconds;
+      result_.placement_seconds += m.placement_seconds;
+    }
+    drop_unused_nodes(mesh);
+  }
+
+  const TopoDS_Shape& shape_;
+  const ShapeMeshOptions& options_;
+  const ShapeIndex index_;
+  std::mutex progress_mutex_;
+  ShapeMeshResult result_;
+  std::vector<char> meshed_, needed_;
+  std::vector<double> lengths_;
+  std::vector<int> sized_, minimum_, segments_;
+  std::vector<EdgeNodes> edges_;
+  std::vector<FaceOutcome> outcomes_;
+};
+
 }  // namespace
 
 ShapeMeshResult mesh_shape(const TopoDS_Shape& shape, const ShapeMeshOptions& options) {
-  const ShapeIndex index(shape);
-  const std::vector<char> meshed = meshed_faces(index, options.faces);
-  ShapeMeshResult result;
-  result.size = options.size > 0 ? options.size : default_size(shape);
-
-  std::vector<double> lengths;
-  const std::vector<int> sized = edge_segment_counts(index, result.size, lengths);
-  // Only edges of meshed faces are discretized.
-  std::vector<char> needed(index.edge_count(), 0);
-  for (int f = 0; f < index.face_count(); ++f) {
-    if (!meshed[f]) continue;
-    for (TopExp_Explorer it(index.face(f), TopAbs_EDGE); it.More(); it.Next()) needed[index.edge_index(it.Current())] = 1;
-  }
-
-  // Small faces whose quads stay inverted get their edges' counts doubled and the
-  // shape is meshed again (at most kRefinements times).
-  constexpr int kRefinements = 2;
-  std::vector<int> minimum(index.edge_count(), 0);
-  ShapeMesh& mesh = result.mesh;
-  std::vector<FaceOutcome> outcomes;
-  for (int round = 0;; ++round) {
-    std::vector<int> segments = sized;
-    for (int e = 0; e < index.edge_count(); ++e) segments[e] = needed[e] ? std::max(segments[e], minimum[e]) : 0;
-    result.changes = assign_even_intervals(index, meshed, lengths, result.size, segments);
-    mesh.nodes.clear();
-    const std::vector<EdgeNodes> edges = discretize_edges(index, segments, mesh.nodes);
-    if (round == 0) check_requested_corners(index, meshed, options.corners, edges, mesh.nodes);
-
-    outcomes.assign(index.face_count(), FaceOutcome{});
-    run_parallel(index.face_count(), options.threads, [&](int f) {
-      if (meshed[f]) outcomes[f] = mesh_one_face(index, f, edges, mesh.nodes, options, result.size);
-    });
-    bool refine = false;
-    for (int f = 0; f < index.face_count() && round < kRefinements; ++f) {
-      if (!meshed[f] || !outcomes[f].finer_edges_may_help) continue;
-      refine = true;
-      for (TopExp_Explorer it(index.face(f), TopAbs_EDGE); it.More(); it.Next()) {
-        const int e = index.edge_index(it.Current());
-        minimum[e] = std::max(minimum[e], 2 * segments[e]);
-      }
-    }
-    if (!refine) break;
-    ++result.refinement_rounds;
-  }
-
-  for (int f = 0; f < index.face_count(); ++f) {
-    if (meshed[f] && !outcomes[f].ok) mesh.refused_faces.push_back({f, outcomes[f].reason});
-  }
-  if (!mesh.refused_faces.empty() && !options.keep_going) {
-    std::string text = std::to_string(mesh.refused_faces.size()) + " face(s) refused: ";
-    for (std::size_t i = 0; i < mesh.refused_faces.size(); ++i) {
-      text += (i ? "; " : "") + mesh.refused_faces[i].reason;
-    }
-    throw InputError(text + " (--keep-going meshes the other faces)");
-  }
-
-  // Assembly in face order: interior nodes after all edge nodes.
-  for (int f = 0; f < index.face_count(); ++f) {
-    if (!meshed[f] || !outcomes[f].ok) continue;
-    const FaceOutcome& o = outcomes[f];
-    const std::vector<NodeId>& shared = o.mesh.boundary_nodes;
-    const NodeId loop_size = static_cast<NodeId>(shared.size());
-    const NodeId base = static_cast<NodeId>(mesh.nodes.size());
-    mesh.nodes.insert(mesh.nodes.end(), o.mesh.interior.begin(), o.mesh.interior.end());
-    const auto first = static_cast<std::int64_t>(mesh.quads.size());
-    for (const Quad& q : o.mesh.quads) {
-      Quad g;
-      for (int k = 0; k < 4; ++k) g[k] = q[k] < loop_size ? shared[q[k]] : base + (q[k] - loop_size);
-      mesh.quads.push_back(g);
-    }
-    mesh.scaled_jacobian.insert(mesh.scaled_jacobian.end(), o.mesh.scaled_jacobian.begin(), o.mesh.scaled_jacobian.end());
-    mesh.faces.push_back({f, o.mesh.template_tree, first, static_cast<std::int64_t>(o.mesh.quads.size())});
-    result.projected_faces += o.mesh.used_projection ? 1 : 0;
-    result.inverted += o.mesh.inverted;
-    result.template_seconds += o.mesh.template_seconds;
-    result.placement_seconds += o.mesh.placement_seconds;
-  }
-  drop_unused_nodes(mesh);
-  return result;
+  return ShapeMeshContext(shape, options).run();
 }
 
 }  // namespace tquad

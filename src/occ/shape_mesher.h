@@ -1,14 +1,25 @@
 // mesh_shape: all-quad meshes of the faces of a CAD shape, conforming across shared
-// edges. The stages: index the shape; choose edge counts from the size and make every
-// face's total even (interval_assignment.h); discretize every edge once; then, per
-// face and in parallel, build the boundary loop, choose corners and run the templates
-// in the face's parameter space; finally number the interior nodes face by face, so
-// the output is the same whatever the number of threads.
+// edges. A pipeline of named stages held by one context:
+//   index            faces to mesh, target size, edge lengths and curvature;
+//   assign intervals every edge's count, every face's total even (interval_assignment.h);
+//   discretize edges every edge once, its nodes shared by its faces;
+//   mesh faces       per face and in parallel, its route (face_route.h): templates on
+//                    its corners, O-grid, decomposition into patches with their cuts,
+//                    placed on the surface and checked;
+//   assemble         the refusal policy, then the faces numbered in order, so the
+//                    output is the same whatever the number of threads.
+// Small faces refused for inverted quads send the pipeline back to "assign
+// intervals" with finer edges (twice at most). Progress and cancel hooks are in the
+// options.
 #pragma once
 
 #include <TopoDS_Shape.hxx>
 
+#include <atomic>
+#include <functional>
 #include <map>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "core/mesher.h"
@@ -16,6 +27,20 @@
 #include "occ/interval_assignment.h"
 
 namespace tquad {
+
+// What the pipeline is doing: a stage's name ("index", "assign intervals",
+// "discretize edges", "mesh faces", "assemble") and how far it is (done of total;
+// for "mesh faces", faces done).
+struct MeshProgress {
+  std::string stage;
+  int done = 0, total = 1;
+};
+
+// Thrown when the cancel flag is raised; nothing is returned or written.
+class MeshCancelled : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 struct ShapeMeshOptions {
   // Target edge length; <= 0 uses the shape's bounding-box diagonal / 25.
@@ -32,6 +57,12 @@ struct ShapeMeshOptions {
   // Keep a face whose mesh still has inverted quads after repair (counted in
   // ShapeMeshResult::inverted) instead of refusing it.
   bool allow_inverted = false;
+  // Called at each stage's start and end, and after each face (from worker threads,
+  // one call at a time). May be empty.
+  std::function<void(const MeshProgress&)> progress;
+  // When set and raised (by another thread, or by `progress`), meshing stops at the
+  // next face or stage with MeshCancelled.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 struct ShapeMeshResult {

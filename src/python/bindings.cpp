@@ -1,5 +1,7 @@
 // tquad._core: the pybind11 binding of the mesher. The Python package `tquad`
 // (tquad/__init__.py) is the public face; this module is private to it.
+#include <atomic>
+#include <optional>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -117,8 +119,26 @@ bool looks_like_brep_text(const std::string& s) {
 py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, const std::vector<int>& faces,
                             const std::map<int, std::vector<int>>& corners, bool keep_going,
                             bool allow_inverted, int threads, int t4_ratio, int t5_cut_edges,
-                            long long max_quads) {
+                            long long max_quads, const py::object& progress) {
   ShapeMeshOptions options;
+  // The Python progress callable runs with the GIL, one call at a time; returning
+  // True, or raising, cancels. Its exception is re-raised once meshing has stopped.
+  std::atomic<bool> cancel{false};
+  std::optional<py::error_already_set> callback_error;
+  options.cancel = &cancel;
+  if (!progress.is_none()) {
+    options.progress = [&](const MeshProgress& p) {
+      py::gil_scoped_acquire gil;
+      if (cancel) return;
+      try {
+        const py::object answer = progress(p.stage, p.done, p.total);
+        if (!answer.is_none() && answer.cast<bool>()) cancel = true;
+      } catch (py::error_already_set& e) {
+        callback_error = std::move(e);
+        cancel = true;
+      }
+    };
+  }
   options.size = size;
   options.faces = faces;
   options.corners = corners;
@@ -133,7 +153,16 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
     py::gil_scoped_release release;
     const TopoDS_Shape shape = looks_like_brep_text(brep_text_or_path) ? read_brep_text(brep_text_or_path)
                                                                         : read_shape(brep_text_or_path);
-    result = mesh_shape(shape, options);
+    try {
+      result = mesh_shape(shape, options);
+    } catch (const MeshCancelled&) {
+      if (!callback_error) throw;
+    }
+    if (callback_error) {
+      py::gil_scoped_acquire gil;
+      callback_error->restore();
+      throw py::error_already_set();
+    }
     quality = summarize_quality(result.mesh.nodes, result.mesh.quads, std::nullopt);
     use_scaled_jacobians(quality, result.mesh.scaled_jacobian);
   }
@@ -158,9 +187,11 @@ PYBIND11_MODULE(_core, m) {
   m.doc() = "Private binding of the TemplateQuad mesher; use the `tquad` package.";
   // Wrong input is the caller's to fix: ValueError with the engine's message.
   py::register_exception<tquad::InputError>(m, "InputError", PyExc_ValueError);
+  // Cancelled from the progress callback: nothing is returned.
+  py::register_exception<tquad::MeshCancelled>(m, "Cancelled", PyExc_RuntimeError);
   m.def("mesh_boundary", &tquad::mesh_boundary_binding, py::arg("points"), py::arg("corners"),
         py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"));
   m.def("mesh_shape", &tquad::mesh_shape_binding, py::arg("brep_text_or_path"), py::arg("size"),
         py::arg("faces"), py::arg("corners"), py::arg("keep_going"), py::arg("allow_inverted"),
-        py::arg("threads"), py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"));
+        py::arg("threads"), py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("progress"));
 }

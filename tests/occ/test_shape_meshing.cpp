@@ -23,6 +23,7 @@
 #include <ShapeAnalysis_Surface.hxx>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -282,6 +283,53 @@ TEST(ShapeMeshing, RefusedFacesNameTheFace) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("face 0"), std::string::npos) << e.what();
   }
+}
+
+}  // namespace
+}  // namespace tquad
+
+namespace tquad {
+namespace {
+
+TopoDS_Shape bracket() {
+  return read_shape(std::string(TQUAD_SOURCE_DIR) + "/resources/shapes/filleted_bracket.brep");
+}
+
+TEST(ShapePipeline, ReportsItsStagesInOrderAndEveryFace) {
+  std::vector<std::string> stages;
+  int faces_done = 0, faces_total = 0;
+  ShapeMeshOptions options;
+  options.progress = [&](const MeshProgress& p) {
+    if (stages.empty() || stages.back() != p.stage) stages.push_back(p.stage);
+    if (p.stage == "mesh faces" && p.total > 1) {
+      faces_done = std::max(faces_done, p.done);
+      faces_total = p.total;
+    }
+  };
+  const ShapeMeshResult result = mesh_shape(bracket(), options);
+  EXPECT_EQ(stages, (std::vector<std::string>{"index", "assign intervals", "discretize edges", "mesh faces",
+                                              "assemble"}));
+  EXPECT_EQ(faces_total, 9);
+  EXPECT_EQ(faces_done, 9);
+  EXPECT_EQ(result.mesh.faces.size(), 9u);
+}
+
+TEST(ShapePipeline, CancelStopsMeshingWithoutAResult) {
+  std::atomic<bool> cancel{true};
+  ShapeMeshOptions options;
+  options.cancel = &cancel;
+  EXPECT_THROW(mesh_shape(bracket(), options), MeshCancelled);
+  // Raised from the progress hook once the first face is done.
+  cancel = false;
+  int faces_after_cancel = 0;
+  options.progress = [&](const MeshProgress& p) {
+    if (p.stage != "mesh faces" || p.total <= 1) return;
+    if (cancel) ++faces_after_cancel;
+    cancel = true;
+  };
+  options.threads = 1;
+  EXPECT_THROW(mesh_shape(bracket(), options), MeshCancelled);
+  EXPECT_EQ(faces_after_cancel, 0) << "no face is meshed after the cancel";
 }
 
 }  // namespace

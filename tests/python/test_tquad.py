@@ -102,6 +102,21 @@ class MeshShapeTest(unittest.TestCase):
             with self.assertRaisesRegex(ValueError, "not a BREP"):
                 tquad.mesh_shape(garbage)
 
+    def test_progress_reports_stages_and_can_cancel(self):
+        path = os.path.join(SHAPES, "filleted_bracket.brep")
+        seen = []
+        m = tquad.mesh_shape(path, progress=lambda stage, done, total: seen.append((stage, done, total)))
+        stages = [s for i, (s, _, _) in enumerate(seen) if i == 0 or seen[i - 1][0] != s]
+        self.assertEqual(stages, ["index", "assign intervals", "discretize edges", "mesh faces", "assemble"])
+        self.assertIn(("mesh faces", 9, 9), seen, "every face reported")
+        self.assertEqual(len(m.faces), 9)
+        with self.assertRaises(tquad.Cancelled, msg="returning True cancels"):
+            tquad.mesh_shape(path, progress=lambda stage, done, total: stage == "mesh faces")
+        def broken(stage, done, total):
+            raise KeyError("from the callback")
+        with self.assertRaisesRegex(KeyError, "from the callback"):
+            tquad.mesh_shape(path, progress=broken)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -8,13 +8,16 @@
 Wrong input raises ValueError with the message the command line would print; the
 message names the face, edge, vertex, point or curve at fault.
 """
-from typing import Dict, Iterable, List, Mapping, Optional, Sequence, Union
+from typing import Callable, Dict, Iterable, List, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
 from . import _core
 
-__all__ = ["Mesh", "mesh_boundary", "mesh_shape"]
+#: Raised when mesh_shape's progress callback asks to stop.
+Cancelled = _core.Cancelled
+
+__all__ = ["Cancelled", "Mesh", "mesh_boundary", "mesh_shape"]
 
 _MAX_QUADS = 100_000_000
 
@@ -97,7 +100,8 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
                corners: Optional[Mapping[int, Sequence[int]]] = None,
                keep_going: bool = False, allow_inverted: bool = False, threads: int = 0,
                t4_ratio: int = 2, t5_cut_edges: int = 0,
-               max_quads: int = _MAX_QUADS) -> Mesh:
+               max_quads: int = _MAX_QUADS,
+               progress: Optional[Callable[[str, int, int], Optional[bool]]] = None) -> Mesh:
     """Mesh the faces of a CAD shape, conforming across shared edges.
 
     Args:
@@ -112,8 +116,12 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
         allow_inverted: keep a face whose quads stay inverted after repair.
         threads: threads meshing faces; 0 uses all cores (same output either way).
         t4_ratio, t5_cut_edges, max_quads: as for mesh_boundary.
+        progress: called as ``progress(stage, done, total)`` at each stage
+            ("index", "assign intervals", "discretize edges", "mesh faces",
+            "assemble") and after each face; returning True (or raising) cancels.
 
     Raises:
+        Cancelled: the progress callback asked to stop (nothing is returned).
         ValueError: unreadable shape, bad options, or a refused face without
             keep_going.
     """
@@ -121,4 +129,4 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
     corner_map: Dict[int, List[int]] = {int(k): [int(v) for v in vs] for k, vs in (corners or {}).items()}
     return Mesh(_core.mesh_shape(str(brep_text_or_path), float(size), face_list, corner_map,
                                  bool(keep_going), bool(allow_inverted), int(threads),
-                                 int(t4_ratio), int(t5_cut_edges), int(max_quads)))
+                                 int(t4_ratio), int(t5_cut_edges), int(max_quads), progress))

@@ -1,8 +1,10 @@
-from typing import Dict, Iterable, List, Mapping, Optional, Sequence, Union
+from typing import Callable, Dict, Iterable, List, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
-__all__ = ["Mesh", "mesh_boundary", "mesh_shape"]
+__all__ = ["Cancelled", "Mesh", "mesh_boundary", "mesh_shape"]
+
+class Cancelled(RuntimeError): ...
 
 class Mesh:
     nodes: np.ndarray
@@ -25,4 +27,5 @@ def mesh_boundary(points: Union[np.ndarray, Sequence[Sequence[float]]], corners:
 def mesh_shape(brep_text_or_path: str, *, size: float = ..., faces: Optional[Iterable[int]] = ...,
                corners: Optional[Mapping[int, Sequence[int]]] = ..., keep_going: bool = ...,
                allow_inverted: bool = ..., threads: int = ..., t4_ratio: int = ...,
-               t5_cut_edges: int = ..., max_quads: int = ...) -> Mesh: ...
+               t5_cut_edges: int = ..., max_quads: int = ...,
+               progress: Optional[Callable[[str, int, int], Optional[bool]]] = ...) -> Mesh: ...

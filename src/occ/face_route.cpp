@@ -1,0 +1,106 @@
+#include "occ/face_route.h"
+
+#include <optional>
+
+#include "core/input_error.h"
+#include "occ/face_corners.h"
+#include "occ/face_decomposed.h"
+
+namespace tquad {
+
+namespace {
+
+// A face whose quads stay inverted.
+struct InvertedQuadsError : InputError {
+  InvertedQuadsError(const std::string& message, std::size_t quads) : InputError(message), quads(quads) {}
+  std::size_t quads;  // in the face's best mesh
+};
+
+// Finer edges may cure a face meshed with at most this many quads: a small curved face
+// of a few segments cannot be meshed on its surface however its nodes move. Larger
+// faces keep their counts (doubling them did not help in the parts measured, and it
+// grows the neighbours' meshes too).
+constexpr std::size_t kRefinableQuads = 16;
+
+// A face meshed whole (templates on its own corners, or the one-hole O-grid) whose
+// worst corner reaches this keeps that mesh; below it, the face decomposition is
+// tried too and the better mesh kept.
+constexpr double kGoodEnoughCorner = 0.3;
+
+// The face's mesh, the one place where the algorithm per face is chosen:
+//   - no hole: the templates on each corner choice (face_corners.h);
+//   - one hole: the O-grid of two halves (o_grid.h, face_decomposed.h);
+//   - more holes, or when the above leave inverted quads or a worst corner under
+//     kGoodEnoughCorner: the face decomposition (face_decomposed.h), any outline;
+//   - a disk around a pole: polar templates (no decomposition).
+// The best mesh is kept; inverted quads that remain refuse the face unless
+// allow_inverted (never a silent bad mesh).
+FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary& boundary,
+                              const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size) {
+  const std::string name = "face " + std::to_string(f);
+  std::optional<FaceMeshResult> best;
+  std::string refusal;
+  const bool pole = boundary.has_degenerate_edge || boundary.polar;
+  if (boundary.inner_wires > 0 && pole) throw InputError(name + " has a hole and a pole; not supported yet");
+  bool decompose = !pole;
+  auto keep = [&](FaceMeshResult&& r) {
+    if (!best || better_face_mesh(r, *best)) best = std::move(r);
+  };
+  if (boundary.inner_wires == 1) {
+    try {
+      keep(mesh_face_o_grid(index.face(f), f, boundary, nodes, index.vertex_count(), size, options.templates));
+    } catch (const std::exception& e) {  // the decomposition below is the other route
+      refusal = e.what();
+    }
+  } else if (boundary.inner_wires == 0) {
+    const auto requested = options.corners.find(f);
+    const bool user_corners = requested != options.corners.end();
+    for (const std::vector<int>& corners :
+         corner_choices(boundary, f, user_corners ? requested->second : std::vector<int>{})) {
+      try {
+        keep(mesh_face(index, f, boundary, corners, nodes, options.templates));
+      } catch (const std::exception& e) {  // an internal failure of one route is noted; others follow
+        refusal = e.what();
+      }
+    }
+    decompose = !user_corners;  // the user's corners are an instruction
+  }
+  if (decompose && (!best || best->inverted > 0 || best->collapsed > 0 || best->worst_corner < kGoodEnoughCorner)) {
+    try {
+      keep(mesh_face_decomposed(index.face(f), f, boundary, nodes, index.vertex_count(), size, options.templates));
+    } catch (const InputError& e) {
+      if (!best) refusal = e.what();
+    }
+  }
+  if (!best) throw InputError(refusal);
+  if (best->inverted > 0 && !options.allow_inverted) {
+    throw InvertedQuadsError(name + ": " + std::to_string(best->inverted) + " quads stay inverted after repair (" +
+                     best->template_tree.substr(0, 60) + ")", best->quads.size());
+  }
+  return std::move(*best);
+}
+
+}  // namespace
+
+FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<EdgeNodes>& edges,
+                          const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size) {
+  FaceOutcome outcome;
+  try {
+    outcome.boundary = face_boundary(index, f, edges, nodes);
+    if (is_disk_around_pole(outcome.boundary)) {
+      outcome.boundary = around_pole(outcome.boundary, index.face(f), f, nodes);
+    }
+    outcome.mesh = best_face_mesh(index, f, outcome.boundary, nodes, options, size);
+    outcome.ok = true;
+  } catch (const InvertedQuadsError& e) {
+    outcome.reason = e.what();
+    outcome.finer_edges_may_help = e.quads <= kRefinableQuads;
+  } catch (const InputError& e) {
+    outcome.reason = e.what();
+  } catch (const std::exception& e) {
+    outcome.reason = std::string("face ") + std::to_string(f) + ": internal failure: " + e.what();
+  }
+  return outcome;
+}
+
+}  // namespace tquad

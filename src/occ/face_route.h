@@ -1,0 +1,31 @@
+// The algorithm per face, picked in one place (best_face_mesh): the templates on the
+// face's own corners, the O-grid, the general decomposition or polar templates, the
+// best mesh kept, and the refusal policy (never a silent bad mesh).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "occ/edge_discretization.h"
+#include "occ/face_boundary.h"
+#include "occ/face_mesher.h"
+#include "occ/shape_index.h"
+#include "occ/shape_mesher.h"
+
+namespace tquad {
+
+struct FaceOutcome {
+  bool ok = false;
+  // Refused for quads that stay inverted on a small mesh: finer edges may help.
+  bool finer_edges_may_help = false;
+  std::string reason;
+  FaceBoundary boundary;
+  FaceMeshResult mesh;
+};
+
+// Face f's mesh from the discretized edges; a refusal is returned with its reason,
+// never thrown (an internal failure is named as such).
+FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<EdgeNodes>& edges,
+                          const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size);
+
+}  // namespace tquad
