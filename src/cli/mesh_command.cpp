@@ -191,6 +191,9 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
     nlohmann::ordered_json report = mesh_report_json(shape, quality);
     if (kind == InputKind::shape) {
       report["edge_size"] = shape_result.size;
+      report["refinement_rounds"] = shape_result.refinement_rounds;
+      report["interval_chains"] = {{"chains", shape_result.interval_chains},
+                                   {"edges", shape_result.chained_edges}};
       nlohmann::ordered_json changes = nlohmann::ordered_json::array();
       for (const IntervalChange& c : shape_result.changes) {
         changes.push_back({{"edge", c.edge}, {"from", c.from}, {"to", c.to}});

@@ -29,7 +29,8 @@ namespace {
 // vertex appears twice, with one id).
 class EarCutter {
  public:
-  EarCutter(const std::vector<Vec3>& points, std::vector<int> ring) : points_(points), ring_(std::move(ring)) {
+  EarCutter(const std::vector<Vec3>& points, std::vector<int> ring, const EarFilter& avoid)
+      : points_(points), ring_(std::move(ring)), avoid_(avoid) {
     const int n = static_cast<int>(ring_.size());
     next_.resize(n);
     prev_.resize(n);
@@ -78,10 +79,15 @@ class EarCutter {
   }
 
  private:
+  // The valid ear of the best shape, ears to avoid only when no other is left.
   int pick(const std::vector<double>& quality) const {
     int best = -1;
+    double best_score = 0;
     for (std::size_t i = 0; i < ring_.size(); ++i) {
-      if (alive_[i] && quality[i] >= 0 && (best < 0 || quality[i] > quality[best])) best = static_cast<int>(i);
+      if (!alive_[i] || quality[i] < 0) continue;
+      const int k = static_cast<int>(i);
+      const double score = quality[i] - (avoid_ && avoid_(ring_[prev_[k]], ring_[k], ring_[next_[k]]) ? 4.0 : 0.0);
+      if (best < 0 || score > best_score) { best = k; best_score = score; }
     }
     return best;
   }
@@ -114,6 +120,7 @@ class EarCutter {
 
   const std::vector<Vec3>& points_;
   std::vector<int> ring_, next_, prev_;
+  const EarFilter& avoid_;
   std::vector<char> alive_;
   int remaining_ = 0;
   double area_tolerance_ = 0;
@@ -246,7 +253,8 @@ void check_triangulation(const Loops& loops, const std::vector<CoarseTriangle>& 
 
 }  // namespace
 
-std::vector<CoarseTriangle> triangulate_polygon_with_holes(const std::vector<std::vector<Vec3>>& input) {
+std::vector<CoarseTriangle> triangulate_polygon_with_holes(const std::vector<std::vector<Vec3>>& input,
+                                                           const EarFilter& avoid) {
   Loops loops;
   for (const std::vector<Vec3>& loop : input) {
     if (loop.size() < 3) throw TriangulationFailure("a loop has fewer than 3 vertices");
@@ -257,7 +265,7 @@ std::vector<CoarseTriangle> triangulate_polygon_with_holes(const std::vector<std
     }
     loops.ids.push_back(std::move(ids));
   }
-  std::vector<CoarseTriangle> triangles = EarCutter(loops.points, bridged_ring(loops)).run();
+  std::vector<CoarseTriangle> triangles = EarCutter(loops.points, bridged_ring(loops), avoid).run();
   improve_by_flips(loops, triangles);
   check_triangulation(loops, triangles);
   return triangles;

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <stdexcept>
 #include <vector>
 
@@ -29,7 +30,10 @@ using CoarseTriangle = std::array<int, 3>;
 // triangle and every other triangle side of exactly two.
 // Throws TriangulationFailure when the polygon is not simple enough to triangulate
 // with its own vertices (crossing loops, touching holes, collinear runs with no ear).
-std::vector<CoarseTriangle> triangulate_polygon_with_holes(const std::vector<std::vector<Vec3>>& loops);
+// `avoid(a, b, c)`: ears (a, b, c) cut only when no other ear is left.
+using EarFilter = std::function<bool(int a, int b, int c)>;
+std::vector<CoarseTriangle> triangulate_polygon_with_holes(const std::vector<std::vector<Vec3>>& loops,
+                                                           const EarFilter& avoid = {});
 
 struct TriangulationFailure : std::runtime_error {
   using std::runtime_error::runtime_error;

@@ -214,7 +214,12 @@ class Decomposer {
       const CoarsePolygon polygon(coarse);
       std::vector<CoarseTriangle> triangles;
       try {
-        triangles = triangulate_polygon_with_holes(coarse_loops(polygon));
+        // An ear whose two sides are one-segment pieces is a triangle of 4 edges: one
+        // quad with a straight angle. Cut it only when nothing else is left.
+        triangles = triangulate_polygon_with_holes(coarse_loops(polygon), [&](int a, int b, int c) {
+          return polygon.is_piece(a, b) && polygon.is_piece(b, c) && piece_segments(polygon, a) == 1 &&
+                 piece_segments(polygon, b) == 1;
+        });
       } catch (const TriangulationFailure& e) {
         if (all_points(coarse)) throw InputError(std::string("the boundary cannot be cut into patches: ") + e.what());
         coarse = every_point();

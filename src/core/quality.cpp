@@ -92,7 +92,7 @@ void use_scaled_jacobians(QualitySummary& summary, const std::vector<double>& pe
   summary.inverted = summary.degenerate = 0;
   for (double j : per_quad) {
     jacobian.add(j);
-    if (j < -kInvertedBelow) ++summary.inverted;
+    if (j < -kSurfaceInvertedBelow) ++summary.inverted;
     else if (j <= kDegenerateUpTo) ++summary.degenerate;
   }
   summary.scaled_jacobian = jacobian.stats();

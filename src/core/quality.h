@@ -28,6 +28,12 @@ struct QualityStats {
 // sign: values in [-kInvertedBelow, kDegenerateUpTo] count as degenerate, below as
 // inverted.
 constexpr double kInvertedBelow = 1e-9;
+// On a curved surface, a corner straight in the face's chart is measured against the
+// surface normal at its node, which the chart and the edges' tolerance fix to about
+// that much (corners of -4.5e-6 to -9.6e-4 measured on the cylinder faces of
+// Zylkopf.stp): values in [-kSurfaceInvertedBelow, 0) are straight angles, degenerate,
+// not folds.
+constexpr double kSurfaceInvertedBelow = 1e-3;
 constexpr double kDegenerateUpTo = 1e-6;
 
 // A quad whose shortest edge is under this fraction of its longest is a triangle in
@@ -49,8 +55,8 @@ QualitySummary summarize_quality(const std::vector<Vec3>& nodes, const std::vect
                                  const std::optional<Vec3>& reference);
 
 // Replaces the scaled-Jacobian statistics and the inverted and degenerate counts by
-// those of per-quad values measured elsewhere (on a curved surface, each corner
-// against the surface normal there).
+// those of per-quad values measured on a surface (each corner against the surface
+// normal there); below -kSurfaceInvertedBelow is inverted.
 void use_scaled_jacobians(QualitySummary& summary, const std::vector<double>& per_quad);
 
 

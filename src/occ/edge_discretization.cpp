@@ -45,16 +45,24 @@ double tangent_turn(const BRepAdaptor_Curve& curve) {
 
 }  // namespace
 
+std::vector<int> edge_turn_minimums(const ShapeIndex& index) {
+  std::vector<int> minimum(index.edge_count(), 0);
+  for (int e = 0; e < index.edge_count(); ++e) {
+    const TopoDS_Edge edge = forward(index.edge(e));
+    if (BRep_Tool::Degenerated(edge)) continue;
+    minimum[e] = std::max(1, static_cast<int>(std::ceil(tangent_turn(BRepAdaptor_Curve(edge)) / kMaxSegmentTurn - 1e-9)));
+  }
+  return minimum;
+}
+
 std::vector<int> edge_segment_counts(const ShapeIndex& index, double size, std::vector<double>& lengths) {
-  std::vector<int> segments(index.edge_count(), 0);
+  std::vector<int> segments = edge_turn_minimums(index);
   lengths.assign(index.edge_count(), 0.0);
   for (int e = 0; e < index.edge_count(); ++e) {
     const TopoDS_Edge edge = forward(index.edge(e));
     if (BRep_Tool::Degenerated(edge)) continue;
-    const BRepAdaptor_Curve curve(edge);
-    lengths[e] = GCPnts_AbscissaPoint::Length(curve);
-    const int by_turn = static_cast<int>(std::ceil(tangent_turn(curve) / kMaxSegmentTurn - 1e-9));
-    segments[e] = std::max({1, by_turn, static_cast<int>(std::lround(lengths[e] / size))});
+    lengths[e] = GCPnts_AbscissaPoint::Length(BRepAdaptor_Curve(edge));
+    segments[e] = std::max(segments[e], static_cast<int>(std::lround(lengths[e] / size)));
   }
   return segments;
 }

@@ -17,6 +17,10 @@ struct EdgeNodes {
   std::vector<NodeId> nodes;   // node ids along the edge's FORWARD orientation
 };
 
+// Per edge, one segment per 45 degrees of its curve's turning, at least 1 (0 for a
+// degenerate edge): the fewest segments that stand for its shape.
+std::vector<int> edge_turn_minimums(const ShapeIndex& index);
+
 // Segments of each edge from the target size: round(length / size), at least 1 and
 // at least one per 45 degrees of the curve's turning; degenerate edges get 0.
 std::vector<int> edge_segment_counts(const ShapeIndex& index, double size,

@@ -166,7 +166,7 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
       const double scale = norm(a) * norm(b) * norm(normal);
       const double jacobian = scale > 0 ? dot(cross(a, b), normal) / scale : -1.0;
       quad_worst = std::min(quad_worst, jacobian);
-      bad = bad || jacobian < -kInvertedBelow;
+      bad = bad || jacobian < -kSurfaceInvertedBelow;
     }
     double shortest = INFINITY, longest = 0;
     for (int i = 0; i < 4; ++i) {

@@ -1,5 +1,6 @@
 #include "occ/face_route.h"
 
+#include <cstdio>
 #include <optional>
 
 #include "core/input_error.h"
@@ -74,8 +75,12 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
   }
   if (!best) throw InputError(refusal);
   if (best->inverted > 0 && !options.allow_inverted) {
-    throw InvertedQuadsError(name + ": " + std::to_string(best->inverted) + " quads stay inverted after repair (" +
-                     best->template_tree.substr(0, 60) + ")", best->quads.size());
+    char worst[32];
+    std::snprintf(worst, sizeof worst, "%.3g", best->worst_corner);
+    throw InvertedQuadsError(name + ": " + std::to_string(best->inverted) + " of " + std::to_string(best->quads.size()) +
+                                 " quads stay inverted after repair (worst corner " + worst + "; " +
+                                 best->template_tree.substr(0, 60) + ")",
+                             best->quads.size());
   }
   return std::move(*best);
 }

@@ -24,12 +24,36 @@ struct IntervalChange {
 // meshed: per face. lengths and size choose +1 or -1 (the smaller relative change).
 // Returns the changes made; throws InputError naming a face whose parity cannot be
 // fixed.
+// minimum: per edge (or empty), a count the change may not go below.
 std::vector<IntervalChange> assign_even_intervals(const ShapeIndex& index,
                                                   const std::vector<char>& meshed,
                                                   const std::vector<double>& lengths, double size,
-                                                  std::vector<int>& segments);
+                                                  std::vector<int>& segments,
+                                                  const std::vector<int>& minimum = {});
+
+// As assign_even_intervals, where each of `chains` (edges kept equal) changes as one
+// unit: it flips the parity of the faces holding an odd number of its edges.
+std::vector<IntervalChange> make_faces_even(const ShapeIndex& index, const std::vector<char>& meshed,
+                                            const std::vector<double>& lengths, double size,
+                                            std::vector<int>& segments, const std::vector<int>& minimum,
+                                            const std::vector<std::vector<int>>& chains);
 
 // Sum of the edge counts along a face's wires (seams twice, degenerate edges 0).
 int face_boundary_total(const ShapeIndex& index, int face, const std::vector<int>& segments);
+
+// The whole shape's edge counts chosen together: opposite edges of every face bounded
+// by four edges are joined into chains (as in mapped meshing), each chain gets the
+// one count that best fits all its edges' length / size (at least every floor), so
+// those faces are mapped grids (T0, the best elements) and even by construction;
+// the other faces are then made even by assign_even_intervals.
+struct IntervalReport {
+  std::vector<IntervalChange> changes;  // against the counts given
+  int chains = 0;                       // chains of two or more edges
+  int chained_edges = 0;
+};
+
+IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector<char>& meshed,
+                                      const std::vector<double>& lengths, double size, std::vector<int>& segments,
+                                      const std::vector<int>& floor);
 
 }  // namespace tquad

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <optional>
 #include <mutex>
@@ -113,8 +114,9 @@ class ShapeMeshContext {
   ShapeMeshResult run() {
     stage("index", [&] { index_faces(); });
     // Small faces whose quads stay inverted get their edges' counts doubled and the
-    // shape is meshed again (at most kRefinements times).
-    constexpr int kRefinements = 2;
+    // shape is meshed again (at most kRefinements times: doubling one face's edges
+    // changes its neighbours' counts, which may need their own round).
+    constexpr int kRefinements = 4;
     for (int round = 0;; ++round) {
       stage("assign intervals", [&] { assign_intervals(); });
       stage("discretize edges", [&] { discretize(round == 0); });
@@ -150,6 +152,7 @@ class ShapeMeshContext {
     meshed_ = meshed_faces(index_, options_.faces);
     result_.size = options_.size > 0 ? options_.size : default_size(shape_);
     sized_ = edge_segment_counts(index_, result_.size, lengths_);
+    curvature_minimum_ = edge_turn_minimums(index_);
     needed_.assign(index_.edge_count(), 0);
     for (int f = 0; f < index_.face_count(); ++f) {
       if (!meshed_[f]) continue;
@@ -163,7 +166,13 @@ class ShapeMeshContext {
   void assign_intervals() {
     segments_ = sized_;
     for (int e = 0; e < index_.edge_count(); ++e) segments_[e] = needed_[e] ? std::max(segments_[e], minimum_[e]) : 0;
-    result_.changes = assign_even_intervals(index_, meshed_, lengths_, result_.size, segments_);
+    // Parity changes never undo the curvature bound or a refinement.
+    floor_ = curvature_minimum_;
+    for (int e = 0; e < index_.edge_count(); ++e) floor_[e] = std::max(floor_[e], minimum_[e]);
+    const IntervalReport intervals = assign_shape_intervals(index_, meshed_, lengths_, result_.size, segments_, floor_);
+    result_.changes = intervals.changes;
+    result_.interval_chains = intervals.chains;
+    result_.chained_edges = intervals.chained_edges;
   }
 
   // Stage "discretize edges": every edge once, shared by its faces.
@@ -243,7 +252,7 @@ class ShapeMeshContext {
   ShapeMeshResult result_;
   std::vector<char> meshed_, needed_;
   std::vector<double> lengths_;
-  std::vector<int> sized_, minimum_, segments_;
+  std::vector<int> sized_, minimum_, segments_, curvature_minimum_, floor_;
   std::vector<EdgeNodes> edges_;
   std::vector<FaceOutcome> outcomes_;
 };

@@ -71,7 +71,9 @@ struct ShapeMeshResult {
   std::vector<IntervalChange> changes;   // edge counts changed for parity
   long long projected_faces = 0;         // faces meshed by the 3D route
   long long inverted = 0;                // quads still inverted after repair
-  int refinement_rounds = 0;             // times edges of faces with inverted quads were doubled
+  int refinement_rounds = 0;
+  int interval_chains = 0;               // chains of opposite edges given one count
+  int chained_edges = 0;             // times edges of faces with inverted quads were doubled
   double template_seconds = 0;           // summed over faces (all threads)
   double placement_seconds = 0;          // interior nodes onto the surfaces, summed
 };

@@ -29,6 +29,7 @@
 #include <map>
 
 #include "core/input_error.h"
+#include "core/quality.h"
 #include "occ/face_mesher.h"
 #include "occ/shape_index.h"
 #include "occ/shape_mesher.h"
@@ -148,7 +149,7 @@ FileReport check_file(const std::string& path) {
         const Vec3 a = mesh.nodes[q[(i + 1) % 4]] - mesh.nodes[q[i]];
         const Vec3 b = mesh.nodes[q[(i + 3) % 4]] - mesh.nodes[q[i]];
         const double s = dot(cross(a, b), n) / (norm(a) * norm(b) * norm(n));
-        EXPECT_GT(s, -1e-9) << path << " face " << f.face << ": quad " << k << " inverted at corner " << i;
+        EXPECT_GE(s, -kSurfaceInvertedBelow) << path << " face " << f.face << ": quad " << k << " inverted at corner " << i;
       }
     }
   }
