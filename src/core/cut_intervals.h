@@ -1,12 +1,15 @@
 // assign_cut_intervals: the number of edges on each cut of a face decomposition.
 //
-// The boundary's counts are fixed (shared with the neighbouring faces); each cut gets
-// the count nearest its length / size, at least 1 (2 on a three-sided patch), and then the parity of every patch
-// is made even, which the templates need: patches are visited leaves-first along a
-// spanning tree of the patch graph (patches joined by cuts), and an odd patch changes
-// its cut towards its parent by one (+1 or -1, whichever stays nearer the goal). The
-// patches' totals sum to the boundary total plus twice the cuts, so the root is even
-// exactly when the boundary total is.
+// The boundary's counts are fixed (shared with the neighbouring faces). Each cut's goal
+// is its length / size, at least 1 (2 on a three-sided patch). Opposite cuts of a
+// four-sided patch are joined into chains (when their goals are within a factor 1.5),
+// and a chain takes one count: the count of a boundary piece it faces when it can
+// (the patch is then a mapped grid), else the best fit of its goals. Then every patch
+// is made even, which the templates need: odd patches are paired along shortest paths
+// of the patch graph, each step changing a whole chain by one (+1 or -1, whichever
+// stays nearer the goals). Where chains cannot reach an odd patch, single cuts are
+// changed instead: they always connect the patches on their two sides, and the
+// patches' totals sum to the boundary total plus twice the cuts, an even number.
 #pragma once
 
 #include <vector>
