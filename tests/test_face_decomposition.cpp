@@ -10,6 +10,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <random>
+#include <algorithm>
 
 #include "core/cut_intervals.h"
 #include "core/decomposed_mesher.h"
@@ -132,6 +134,64 @@ TEST(FaceDecomposition, WrongOrientationAndOddTotalsAreRefused) {
   odd.loops[0].points.pop_back();
   odd.loops[0].vertex.pop_back();
   EXPECT_THROW(mesh_planar_domain(odd, 0.5), InputError);
+}
+
+TEST(FaceDecomposition, BrokenDomainsAreRefusedWithTheirFault) {
+  const auto refused = [](const PlanarDomain& d, const std::string& words) {
+    try {
+      mesh_planar_domain(d, 0.25);
+      ADD_FAILURE() << "accepted a domain that should fail with: " << words;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  const DomainLoop square = polygon_loop({{0, 0}, {2, 0}, {2, 2}, {0, 2}}, 4);
+  PlanarDomain hole_outside{{square, circle_hole({3, 1}, 0.5, 8)}};
+  refused(hole_outside, "hole 1 lies outside the outer loop");
+  PlanarDomain crossing_hole{{square, circle_hole({2, 1}, 0.5, 8)}};
+  refused(crossing_hole, "meets hole 1 segment");
+  PlanarDomain overlapping_holes{{square, circle_hole({0.8, 1}, 0.4, 8), circle_hole({1.2, 1}, 0.4, 8)}};
+  refused(overlapping_holes, "meets hole");
+  PlanarDomain bow_tie{{polygon_loop({{0, 0}, {2, 2}, {2, 0}, {0, 2}}, 2)}};
+  refused(bow_tie, "must run counter-clockwise");
+  PlanarDomain with_nan{{square}};
+  with_nan.loops[0].points[3].y = std::nan("");
+  refused(with_nan, "point 3 is not a finite number");
+  PlanarDomain repeated{{square}};
+  repeated.loops[0].points[5] = repeated.loops[0].points[4];
+  refused(repeated, "points 4 and 5 coincide");
+}
+
+TEST(FaceDecomposition, RandomLoopsAreMeshedOrRefusedNeverBroken) {
+  // Random points in a square as the outer loop (often crossing itself), sometimes a
+  // random hole: each is either refused with InputError or meshed validly.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> coordinate(0, 1);
+  int meshed = 0, refused = 0;
+  for (int i = 0; i < 2000; ++i) {
+    PlanarDomain d;
+    const int n = 4 + 2 * static_cast<int>(rng() % 8);
+    DomainLoop outer;
+    for (int k = 0; k < n; ++k) {
+      outer.points.push_back({coordinate(rng), coordinate(rng), 0});
+      outer.vertex.push_back(1);
+    }
+    if (twice_signed_area(outer.points) < 0) std::reverse(outer.points.begin(), outer.points.end());
+    d.loops.push_back(outer);
+    if (i % 3 == 0) d.loops.push_back(circle_hole({coordinate(rng), coordinate(rng)}, 0.05, 6));
+    QuadMesh mesh;
+    try {
+      mesh = mesh_planar_domain(d, 0.2);
+    } catch (const InputError&) {
+      ++refused;
+      continue;
+    }
+    ++meshed;
+    ASSERT_EQ(check_domain_mesh(mesh, loop_sizes(d)), "") << "random domain " << i;
+  }
+  std::printf("[ quality  ] random loops: %d meshed, %d refused as broken\n", meshed, refused);
+  EXPECT_GT(meshed, 0);
+  EXPECT_GT(refused, 0);
 }
 
 TEST(FaceDecomposition, GeneratedDomainsGiveValidMeshes) {

@@ -10,6 +10,7 @@
 #include "core/coarse_triangulation.h"
 #include "core/input_error.h"
 #include "core/planar_predicates.h"
+#include "core/planar_self_intersection.h"
 
 namespace tquad {
 
@@ -467,15 +468,64 @@ class Decomposer {
   std::vector<LoopCoarsening> coarsening_;
 };
 
+// Even-odd rule: whether p lies inside the closed polygon.
+bool inside_loop(const std::vector<Vec3>& loop, const Vec3& p) {
+  bool in = false;
+  for (std::size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
+    const Vec3 &a = loop[i], &b = loop[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) in = !in;
+  }
+  return in;
+}
+
+std::string loop_name(int l) { return l == 0 ? "the outer loop" : "hole " + std::to_string(l); }
+
+// A domain the decomposition can work on: finite points, no zero-length segment,
+// loops oriented as PlanarDomain says, and no two boundary segments meeting (a loop
+// crossing itself, a hole crossing or touching another loop).
 void check_domain(const PlanarDomain& domain) {
   if (domain.loops.empty()) throw InputError("the domain has no loop");
+  std::vector<PlanarSegment> segments;
+  std::vector<std::pair<int, int>> where;  // (loop, segment)
   for (int l = 0; l < domain.loop_count(); ++l) {
     const std::vector<Vec3>& p = domain.loops[l].points;
-    const std::string name = l == 0 ? "the outer loop" : "hole " + std::to_string(l);
-    if (p.size() < 3) throw InputError(name + " has fewer than 3 points");
+    const int n = static_cast<int>(p.size());
+    if (n < 3) throw InputError(loop_name(l) + " has fewer than 3 points");
+    for (int i = 0; i < n; ++i) {
+      if (!std::isfinite(p[i].x) || !std::isfinite(p[i].y)) {
+        throw InputError(loop_name(l) + ": point " + std::to_string(i) + " is not a finite number");
+      }
+      if (same_xy(p[i], p[(i + 1) % n])) {
+        throw InputError(loop_name(l) + ": points " + std::to_string(i) + " and " + std::to_string((i + 1) % n) +
+                         " coincide");
+      }
+      segments.push_back({p[i], p[(i + 1) % n]});
+      where.push_back({l, i});
+    }
     const double area = twice_signed_area(p);
     if (l == 0 ? area <= 0 : area >= 0) {
-      throw InputError(name + (l == 0 ? " must run counter-clockwise" : " must run clockwise"));
+      throw InputError(loop_name(l) + (l == 0 ? " must run counter-clockwise" : " must run clockwise"));
+    }
+  }
+  const auto crossing = find_segment_crossing(segments, [&](int i, int j) {
+    if (where[i].first != where[j].first) return false;
+    const int n = static_cast<int>(domain.loops[where[i].first].points.size());
+    const int a = where[i].second, b = where[j].second;
+    return b == a + 1 || (a == 0 && b == n - 1);
+  });
+  if (crossing) {
+    const auto [l1, s1] = where[crossing->first];
+    const auto [l2, s2] = where[crossing->second];
+    throw InputError(loop_name(l1) + " segment " + std::to_string(s1) + " meets " +
+                     (l1 == l2 ? "its" : loop_name(l2)) + " segment " + std::to_string(s2) +
+                     ": the boundary crosses or touches itself");
+  }
+  // With no crossing, a hole lies wholly inside or outside each other loop.
+  for (int l = 1; l < domain.loop_count(); ++l) {
+    const Vec3& p = domain.loops[l].points[0];
+    if (!inside_loop(domain.loops[0].points, p)) throw InputError(loop_name(l) + " lies outside the outer loop");
+    for (int m = 1; m < domain.loop_count(); ++m) {
+      if (m != l && inside_loop(domain.loops[m].points, p)) throw InputError(loop_name(l) + " lies inside " + loop_name(m));
     }
   }
 }

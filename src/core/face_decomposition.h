@@ -62,8 +62,10 @@ struct FaceDecomposition {
   int refinements = 0;  // times step 2 added coarse vertices to clear a cut
 };
 
-// Throws InputError when the loops are not oriented as PlanarDomain requires, or have
-// fewer than 3 points.
+// Throws InputError, naming the loop and point or segment, when a loop has fewer than
+// 3 points, a coordinate that is not finite, two equal consecutive points, or the
+// wrong orientation, or when boundary segments meet (a loop crossing itself, a hole
+// crossing or touching another loop).
 FaceDecomposition decompose_domain(const PlanarDomain& domain);
 
 // The domain node ids along a patch side, from its start to its end; `cut_nodes[c]`

@@ -95,39 +95,12 @@ void check_fold_backs(const std::vector<Point2>& q) {
 
 void check_segment_crossings(const std::vector<Point2>& q) {
   const int n = static_cast<int>(q.size());
-  double xmin = q[0].x, xmax = q[0].x, ymin = q[0].y, ymax = q[0].y;
-  for (const Point2& p : q) {
-    xmin = std::min(xmin, p.x); xmax = std::max(xmax, p.x);
-    ymin = std::min(ymin, p.y); ymax = std::max(ymax, p.y);
-  }
-  // A grid of about n cells: segments of a boundary have similar sizes, so each falls
-  // in a few cells and only near segments are compared.
-  const int cells_per_side = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(n))));
-  const double cw = std::max(xmax - xmin, 1e-300) / cells_per_side;
-  const double ch = std::max(ymax - ymin, 1e-300) / cells_per_side;
-  auto cell_x = [&](double x) { return std::min(cells_per_side - 1, static_cast<int>((x - xmin) / cw)); };
-  auto cell_y = [&](double y) { return std::min(cells_per_side - 1, static_cast<int>((y - ymin) / ch)); };
-
-  std::vector<std::vector<int>> cells(static_cast<std::size_t>(cells_per_side) * cells_per_side);
-  for (int i = 0; i < n; ++i) {
-    const Point2& a = q[i];
-    const Point2& b = q[(i + 1) % n];
-    for (int cx = cell_x(std::min(a.x, b.x)); cx <= cell_x(std::max(a.x, b.x)); ++cx) {
-      for (int cy = cell_y(std::min(a.y, b.y)); cy <= cell_y(std::max(a.y, b.y)); ++cy) {
-        cells[static_cast<std::size_t>(cy) * cells_per_side + cx].push_back(i);
-      }
-    }
-  }
-  for (const auto& cell : cells) {
-    for (std::size_t s = 0; s < cell.size(); ++s) {
-      for (std::size_t t = s + 1; t < cell.size(); ++t) {
-        const int i = std::min(cell[s], cell[t]);
-        const int j = std::max(cell[s], cell[t]);
-        if (j == i + 1 || (i == 0 && j == n - 1)) continue;  // neighbours share a point
-        if (segments_meet(q[i], q[(i + 1) % n], q[j], q[(j + 1) % n])) report_crossing(i, j, n);
-      }
-    }
-  }
+  std::vector<PlanarSegment> segments;
+  for (int i = 0; i < n; ++i) segments.push_back({q[i], q[(i + 1) % n]});
+  const auto crossing = find_segment_crossing(segments, [n](int i, int j) {
+    return j == i + 1 || (i == 0 && j == n - 1);  // neighbours share a point
+  });
+  if (crossing) report_crossing(crossing->first, crossing->second, n);
 }
 
 }  // namespace
@@ -141,6 +114,46 @@ void check_planar_self_intersection(const std::vector<Vec3>& points) {
   if (!planar_normal(points, normal)) {
     throw InputError("boundary encloses no area: it lies on a line or retraces itself");
   }
+}
+
+std::optional<std::pair<int, int>> find_segment_crossing(const std::vector<PlanarSegment>& segments,
+                                                         const std::function<bool(int, int)>& neighbours) {
+  const int n = static_cast<int>(segments.size());
+  if (n == 0) return std::nullopt;
+  double xmin = segments[0].a.x, xmax = xmin, ymin = segments[0].a.y, ymax = ymin;
+  for (const PlanarSegment& s : segments) {
+    for (const Vec3& p : {s.a, s.b}) {
+      xmin = std::min(xmin, p.x); xmax = std::max(xmax, p.x);
+      ymin = std::min(ymin, p.y); ymax = std::max(ymax, p.y);
+    }
+  }
+  // A grid of about n cells: segments of a boundary have similar sizes, so each falls
+  // in a few cells and only near segments are compared.
+  const int cells_per_side = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(n))));
+  const double cw = std::max(xmax - xmin, 1e-300) / cells_per_side;
+  const double ch = std::max(ymax - ymin, 1e-300) / cells_per_side;
+  auto cell_x = [&](double x) { return std::min(cells_per_side - 1, static_cast<int>((x - xmin) / cw)); };
+  auto cell_y = [&](double y) { return std::min(cells_per_side - 1, static_cast<int>((y - ymin) / ch)); };
+  std::vector<std::vector<int>> cells(static_cast<std::size_t>(cells_per_side) * cells_per_side);
+  for (int i = 0; i < n; ++i) {
+    const Vec3 &a = segments[i].a, &b = segments[i].b;
+    for (int cx = cell_x(std::min(a.x, b.x)); cx <= cell_x(std::max(a.x, b.x)); ++cx) {
+      for (int cy = cell_y(std::min(a.y, b.y)); cy <= cell_y(std::max(a.y, b.y)); ++cy) {
+        cells[static_cast<std::size_t>(cy) * cells_per_side + cx].push_back(i);
+      }
+    }
+  }
+  for (const auto& cell : cells) {
+    for (std::size_t s = 0; s < cell.size(); ++s) {
+      for (std::size_t t = s + 1; t < cell.size(); ++t) {
+        const int i = std::min(cell[s], cell[t]);
+        const int j = std::max(cell[s], cell[t]);
+        if (i == j || neighbours(i, j)) continue;
+        if (segments_meet(segments[i].a, segments[i].b, segments[j].a, segments[j].b)) return std::make_pair(i, j);
+      }
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace tquad

@@ -3,6 +3,9 @@
 // their projections may legitimately overlap.
 #pragma once
 
+#include <functional>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "core/vec3.h"
@@ -20,5 +23,15 @@ Vec3 newell_normal(const std::vector<Vec3>& loop_points);
 // Unit normal of the loop's plane (oriented by the loop) when all its points lie on
 // one plane within 1e-9 of its size; false otherwise.
 bool planar_normal(const std::vector<Vec3>& loop_points, Vec3& unit_normal);
+
+struct PlanarSegment {
+  Vec3 a, b;  // x, y used
+};
+
+// A pair (i < j) of segments that meet, other than pairs that `neighbours(i, j)`
+// says share an end by construction; empty when none do. O(n) on average (a uniform
+// grid of bounding boxes).
+std::optional<std::pair<int, int>> find_segment_crossing(const std::vector<PlanarSegment>& segments,
+                                                         const std::function<bool(int, int)>& neighbours);
 
 }  // namespace tquad
