@@ -45,11 +45,32 @@ std::vector<Vec3> local_positions(const FaceBoundary& b, const std::vector<Vec3>
   return xyz;
 }
 
+// A disk meshed around a pole (polar (x, y), the pole at the origin) has no node
+// there unless one is put there: otherwise a quad spans the pole (a cone's tip cut
+// off: 41 below the apex on Cone_1.brep at D/25). The interior node nearest the
+// origin moves onto it, unless that inverts a quad.
+void put_a_node_on_the_pole(QuadMesh& mesh, int boundary_points) {
+  const int count = static_cast<int>(mesh.nodes.size());
+  if (count <= boundary_points) return;
+  int nearest = boundary_points;
+  for (int i = boundary_points; i < count; ++i) {
+    if (norm(mesh.nodes[i]) < norm(mesh.nodes[nearest])) nearest = i;
+  }
+  const std::vector<Vec3> loop(mesh.nodes.begin(), mesh.nodes.begin() + boundary_points);
+  const Vec3 up = newell_normal(loop);
+  const long long before = summarize_quality(mesh, up).inverted;
+  const Vec3 kept = mesh.nodes[nearest];
+  mesh.nodes[nearest] = Vec3{0, 0, 0};
+  const QualitySummary after = summarize_quality(mesh, up);
+  if (after.inverted > before || after.collapsed > 0) mesh.nodes[nearest] = kept;
+}
+
 FaceMeshResult mesh_in_parameter_space(const TopoDS_Face& face, const FaceBoundary& b,
                                        const std::vector<int>& corners, const std::vector<Vec3>& nodes,
                                        const MeshOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const QuadMesh uv_mesh = mesh_boundary(BoundaryLoop{b.uv, corners}, options);
+  QuadMesh uv_mesh = mesh_boundary(BoundaryLoop{b.uv, corners}, options);
+  if (b.polar) put_a_node_on_the_pole(uv_mesh, static_cast<int>(b.nodes.size()));
   FaceMeshResult out;
   out.boundary_nodes = b.nodes;
   take_quads(uv_mesh, !runs_counter_clockwise(b, face), out);

@@ -191,6 +191,15 @@ TEST(ShapeMeshing, PolesAndSeams) {
   EXPECT_EQ(r.refused, 1);
 }
 
+TEST(ShapeMeshing, ConeApexIsAMeshNode) {
+  // A pointed cone of height 20 along z: its side's pole is the apex (0, 0, 20); a
+  // quad spanning it would cut the tip off.
+  const ShapeMeshResult result = mesh_shape(BRepPrimAPI_MakeCone(10.0, 0.0, 20.0).Shape(), ShapeMeshOptions{});
+  double nearest = INFINITY;
+  for (const Vec3& p : result.mesh.nodes) nearest = std::min(nearest, distance(p, Vec3{0, 0, 20}));
+  EXPECT_LT(nearest, 1e-9);
+}
+
 TEST(ShapeMeshing, IgesInput) {
   // The bracket written as IGES (BRep mode, which keeps faces and shared edges) reads
   // back and meshes every face.
