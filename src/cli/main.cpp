@@ -89,6 +89,8 @@ int run_cli(int argc, char** argv) {
   mesh->add_flag("--keep-going", command.shape.keep_going,
                  "CAD input: mesh and write the other faces when one is refused, and list\n"
                  "the refused faces; without it a refused face stops the job (exit 2)");
+  mesh->add_flag("--progress", command.progress,
+                 "CAD input: print each stage, and the faces meshed in tenths, on stderr");
   mesh->add_flag("--allow-inverted", command.shape.allow_inverted,
                  "CAD input: keep a face whose mesh still has inverted quads after repair\n"
                  "(reported) instead of refusing it");

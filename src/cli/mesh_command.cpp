@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <functional>
 #include <cstdio>
 #include <filesystem>
 #include <new>
@@ -135,13 +136,34 @@ ShapeMesh mesh_boundary_input(const MeshCommand& command, OutputFormat format, Q
 }
 
 // The CAD path: every (selected) face, conforming across shared edges.
+
+// --progress: one line per stage on `err`, and the faces meshed in tenths.
+std::function<void(const MeshProgress&)> progress_printer(std::ostream& err) {
+  return [&err, last_tenth = -1, most = 0](const MeshProgress& p) mutable {
+    if (p.stage != "mesh faces" || p.total <= 1) {
+      if (p.done == 0) err << "tquad: " << p.stage << "\n";
+      last_tenth = -1;
+      most = 0;
+      return;
+    }
+    // Workers report out of order: only a count above all seen so far is news.
+    if (p.done <= most) return;
+    most = p.done;
+    const int tenth = 10 * p.done / p.total;
+    if (tenth == last_tenth) return;
+    last_tenth = tenth;
+    err << "tquad: mesh faces " << p.done << " of " << p.total << "\n";
+  };
+}
+
 ShapeMesh mesh_shape_input(const MeshCommand& command, OutputFormat format, QualitySummary& quality,
-                           ShapeMeshResult& result) {
+                           ShapeMeshResult& result, std::ostream& err) {
   if (format == OutputFormat::svg) {
     throw InputError(command.output + ": SVG output draws boundary regions only; use .vtu, .inp, .msh or .json");
   }
   ShapeMeshOptions options = command.shape;
   options.templates = command.options;
+  if (command.progress) options.progress = progress_printer(err);
   if (!command.faces.empty()) options.faces = parse_face_list(command.faces);
   options.corners = parse_corner_specs(command.corners);
   const TopoDS_Shape shape = read_shape(command.input);
@@ -169,7 +191,7 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
   QualitySummary quality;
   ShapeMeshResult shape_result;
   const ShapeMesh shape = kind == InputKind::boundary ? mesh_boundary_input(command, format, quality)
-                                                      : mesh_shape_input(command, format, quality, shape_result);
+                                                      : mesh_shape_input(command, format, quality, shape_result, err);
   switch (format) {
     case OutputFormat::json: write_mesh_json_file(command.output, shape); break;
     case OutputFormat::vtu: write_vtu_file(command.output, shape); break;

@@ -20,6 +20,7 @@ struct MeshCommand {
   ShapeMeshOptions shape;
   std::string faces;                 // --faces "0,2,5-7"
   std::vector<std::string> corners;  // --corners "FACE:V1,V2,..."
+  bool progress = false;             // --progress: stages and faces on stderr
 };
 
 // Exit status: 0 done; 2 the input (or the command line) is wrong; 1 an internal

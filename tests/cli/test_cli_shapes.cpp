@@ -253,6 +253,22 @@ TEST_F(ShapeCli, ReportHasEveryField) {
   }
 }
 
+TEST_F(ShapeCli, ProgressGoesToStderrAndChangesNothing) {
+  const RunResult quiet = run_tquad({"mesh", shape_file("filleted_bracket.brep"), "-o", path("quiet.json")});
+  const RunResult told = run_tquad({"mesh", shape_file("filleted_bracket.brep"), "-o", path("told.json"), "--progress"});
+  ASSERT_EQ(quiet.exit_status, 0) << quiet.err;
+  ASSERT_EQ(told.exit_status, 0) << told.err;
+  EXPECT_EQ(read_text(path("quiet.json")), read_text(path("told.json"))) << "the same mesh either way";
+  std::size_t at = 0;
+  for (const std::string stage : {"tquad: index", "tquad: assign intervals", "tquad: discretize edges",
+                                  "tquad: mesh faces", "tquad: mesh faces 9 of 9", "tquad: assemble"}) {
+    const std::size_t found = told.err.find(stage, at);
+    ASSERT_NE(found, std::string::npos) << "missing or out of order: " << stage << "\n" << told.err;
+    at = found + stage.size();
+  }
+  EXPECT_EQ(quiet.err.find("tquad: index"), std::string::npos) << "no progress without --progress";
+}
+
 TEST_F(ShapeCli, ReportEdgeSizeIsTheGivenSize) {
   const json report = report_of(shape_file("bspline_patch.brep"), "patch.json", {"--size", "7.5"});
   ASSERT_FALSE(HasFailure());
