@@ -214,6 +214,7 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
     if (kind == InputKind::shape) {
       report["edge_size"] = shape_result.size;
       report["refinement_rounds"] = shape_result.refinement_rounds;
+      report["off_surface_quads"] = shape_result.off_surface;
       report["interval_chains"] = {{"chains", shape_result.interval_chains},
                                    {"edges", shape_result.chained_edges}};
       nlohmann::ordered_json changes = nlohmann::ordered_json::array();

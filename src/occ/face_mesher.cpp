@@ -163,7 +163,11 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
   // singular at the node (a pole), the normal at the quad's centre stands in.
   std::vector<Vec3> normals(param.size());
   for (std::size_t i = 0; i < param.size(); ++i) normals[i] = outer_normal(polar ? polar_to_uv(*polar, param[i]) : param[i]);
-  long long inverted = 0, collapsed = 0;
+  long long inverted = 0, collapsed = 0, off_surface = 0;
+  auto surface_point = [&](const Vec3& uv) {
+    const gp_Pnt p = surface.Value(uv.x, uv.y);
+    return Vec3{p.X(), p.Y(), p.Z()};
+  };
   double worst = 1.0;
   out.scaled_jacobian.clear();
   out.scaled_jacobian.reserve(out.quads.size());
@@ -196,12 +200,23 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
       longest = std::max(longest, edge);
     }
     collapsed += shortest < kCollapsedEdgeRatio * longest ? 1 : 0;
+    // How far the quad's centre lies from the surface at its parameters' centre,
+    // against its longer diagonal: a quad cutting across the surface it stands for.
+    Vec3 centre, centre_param;
+    for (NodeId n : q) {
+      centre += 0.25 * xyz[n];
+      centre_param += 0.25 * param[n];
+    }
+    const Vec3 on_surface = surface_point(polar ? polar_to_uv(*polar, centre_param) : centre_param);
+    const double diagonal = std::max(distance(xyz[q[0]], xyz[q[2]]), distance(xyz[q[1]], xyz[q[3]]));
+    off_surface += distance(centre, on_surface) > kOffSurfaceRatio * diagonal ? 1 : 0;
     worst = std::min(worst, quad_worst);
     out.scaled_jacobian.push_back(quad_worst);
     inverted += bad ? 1 : 0;
   }
   out.inverted = inverted;
   out.collapsed = collapsed;
+  out.off_surface = off_surface;
   out.worst_corner = worst;
 }
 

@@ -31,6 +31,7 @@ struct FaceMeshResult {
   bool used_projection = false;  // the 3D fallback was used
   long long inverted = 0;        // quads still inverted after repair
   long long collapsed = 0;       // quads with an edge under kCollapsedEdgeRatio of their longest
+  long long off_surface = 0;     // quads whose centre is over kOffSurfaceRatio diagonals off the surface
   double worst_corner = 1.0;     // lowest scaled Jacobian against the outer normal
   std::vector<double> scaled_jacobian;  // per quad, its corners signed by the outer normal
   double template_seconds = 0;   // building the template mesh (core)
@@ -46,6 +47,10 @@ struct FaceMeshResult {
 // S_v within about half a degree of parallel (the collapsed corner of a Bezier patch:
 // 1e-3 measured on capot.brep), or one of them vanishing against the other (a pole:
 // 4e-15 measured on U_Joint_2.stp).
+// A quad whose centre lies farther than this many of its diagonals from the surface
+// (at the centre of its corners' parameters) cuts across the surface it stands for.
+constexpr double kOffSurfaceRatio = 0.25;
+
 inline bool singular_normal(const gp_Vec& du, const gp_Vec& dv) {
   const double a = du.Magnitude(), b = dv.Magnitude();
   return du.Crossed(dv).Magnitude() <= 1e-2 * a * b || std::min(a, b) <= 1e-9 * std::max(a, b);

@@ -239,6 +239,7 @@ class ShapeMeshContext {
       mesh.faces.push_back({f, m.template_tree, first, static_cast<std::int64_t>(m.quads.size())});
       result_.projected_faces += m.used_projection ? 1 : 0;
       result_.inverted += m.inverted;
+      result_.off_surface += m.off_surface;
       result_.template_seconds += m.template_seconds;
       result_.placement_seconds += m.placement_seconds;
     }

@@ -221,10 +221,14 @@ TEST_F(ShapeCli, ReportHasEveryField) {
   const json report = report_of(shape_file("filleted_bracket.brep"), "bracket.json");
   ASSERT_FALSE(HasFailure());
   for (const char* key : {"nodes", "quads", "triangles", "quality", "faces", "refused_faces", "edge_size",
-                          "changed_edges"}) {
+                          "changed_edges", "refinement_rounds", "off_surface_quads", "interval_chains"}) {
     EXPECT_TRUE(report.contains(key)) << key << " missing from " << report.dump();
   }
   ASSERT_FALSE(HasFailure());
+  EXPECT_EQ(report["off_surface_quads"], 0) << "the bracket's quads lie on their faces";
+  EXPECT_EQ(report["quality"]["collapsed"], 0);
+  // The bracket's faces bounded by four edges form chains of opposite edges.
+  EXPECT_GT(report["interval_chains"]["chains"].get<int>(), 0);
   EXPECT_GT(report["nodes"].get<long long>(), 0);
   EXPECT_GT(report["quads"].get<long long>(), 0);
   EXPECT_EQ(report["triangles"], 0);
