@@ -215,6 +215,7 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
       report["edge_size"] = shape_result.size;
       report["refinement_rounds"] = shape_result.refinement_rounds;
       report["off_surface_quads"] = shape_result.off_surface;
+      report["stage_seconds"] = shape_result.stage_seconds;
       report["interval_chains"] = {{"chains", shape_result.interval_chains},
                                    {"edges", shape_result.chained_edges}};
       nlohmann::ordered_json changes = nlohmann::ordered_json::array();

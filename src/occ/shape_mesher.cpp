@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
@@ -133,7 +134,9 @@ class ShapeMeshContext {
   void stage(const char* name, const Work& work) {
     throw_if_cancelled();
     report(name, 0, 1);
+    const auto start = std::chrono::steady_clock::now();
     work();
+    result_.stage_seconds[name] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     throw_if_cancelled();
     report(name, 1, 1);
   }

@@ -71,6 +71,7 @@ struct ShapeMeshResult {
   std::vector<IntervalChange> changes;   // edge counts changed for parity
   long long projected_faces = 0;         // faces meshed by the 3D route
   long long inverted = 0;                // quads still inverted after repair
+  std::map<std::string, double> stage_seconds;  // wall time per stage, summed over rounds
   long long off_surface = 0;             // quads cutting across their surface (face_mesher.h)
   int refinement_rounds = 0;
   int interval_chains = 0;               // chains of opposite edges given one count

@@ -221,7 +221,7 @@ TEST_F(ShapeCli, ReportHasEveryField) {
   const json report = report_of(shape_file("filleted_bracket.brep"), "bracket.json");
   ASSERT_FALSE(HasFailure());
   for (const char* key : {"nodes", "quads", "triangles", "quality", "faces", "refused_faces", "edge_size",
-                          "changed_edges", "refinement_rounds", "off_surface_quads", "interval_chains"}) {
+                          "changed_edges", "refinement_rounds", "off_surface_quads", "interval_chains", "stage_seconds"}) {
     EXPECT_TRUE(report.contains(key)) << key << " missing from " << report.dump();
   }
   ASSERT_FALSE(HasFailure());
@@ -229,6 +229,9 @@ TEST_F(ShapeCli, ReportHasEveryField) {
   EXPECT_EQ(report["quality"]["collapsed"], 0);
   // The bracket's faces bounded by four edges form chains of opposite edges.
   EXPECT_GT(report["interval_chains"]["chains"].get<int>(), 0);
+  for (const char* stage : {"index", "assign intervals", "discretize edges", "mesh faces", "assemble"}) {
+    EXPECT_GE(report["stage_seconds"][stage].get<double>(), 0.0) << stage;
+  }
   EXPECT_GT(report["nodes"].get<long long>(), 0);
   EXPECT_GT(report["quads"].get<long long>(), 0);
   EXPECT_EQ(report["triangles"], 0);
