@@ -199,6 +199,7 @@ FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::v
   for (const WireWalk::Occurrence& o : walk.occurrences) {
     b.edge_start.push_back(o.start);
     b.start_vertex.push_back(o.start_node);
+    b.edge_index.push_back(index.edge_index(o.edge));
     b.is_seam.push_back(o.seam);
   }
   const auto& occurrences = walk.occurrences;

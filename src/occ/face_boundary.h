@@ -31,6 +31,7 @@ struct FaceBoundary {
   std::vector<Vec3> uv;        // (u, v, 0) of each loop node
   std::vector<int> edge_start;      // loop position where each wire edge begins
   std::vector<int> start_vertex;    // shape vertex index at each edge_start
+  std::vector<int> edge_index;      // shape edge index of each wire edge
   std::vector<char> is_seam;        // the wire edge is the face's seam (met twice)
   std::vector<double> turn;         // signed turning angle there (radians, > 0 convex)
   std::vector<double> arc_length;   // 3D length along the loop to each node (size + 1)

@@ -12,6 +12,7 @@
 #include <map>
 
 #include "core/input_error.h"
+#include "occ/band_balance.h"
 
 namespace tquad {
 
@@ -235,6 +236,8 @@ IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector
     const int n = chain_count(goals, low);
     for (int e : chain) segments[e] = n;
   }
+  // Bands one segment wide need equal long sides (band_balance.h).
+  report.balanced_bands = balance_one_quad_bands(index, meshed, segments, chains);
   // Faces left odd are made even by changing whole chains (which keeps their faces
   // mapped) or single edges.
   make_faces_even(index, meshed, lengths, size, segments, floor, chains);

@@ -50,6 +50,7 @@ struct IntervalReport {
   std::vector<IntervalChange> changes;  // against the counts given
   int chains = 0;                       // chains of two or more edges
   int chained_edges = 0;
+  int balanced_bands = 0;               // faces one segment wide given equal long sides
 };
 
 IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector<char>& meshed,

@@ -200,6 +200,31 @@ TEST(ShapeMeshing, ConeApexIsAMeshNode) {
   EXPECT_LT(nearest, 1e-9);
 }
 
+TEST(ShapeMeshing, BandOneQuadWideGetsEqualLongSides) {
+  // A quarter ring 1.3 wide between radii 9.2 and 10.5, its outer arc in two edges
+  // (so the face has five edges and no chain of opposite edges): at size 1.2 the
+  // outer arc rounds to 7 + 7 segments, the inner to 12, the ends to 1 (an even
+  // total: no parity change comes to help). One quad across has no room for a
+  // transition, so the interval assignment must make the long sides equal
+  // (band_balance.h), and the face is a mapped grid.
+  const gp_Ax2 axis(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1));
+  BRepBuilderAPI_MakeWire wire;
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(9.2, 0, 0), gp_Pnt(10.5, 0, 0)).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 10.5), 0, M_PI / 4).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 10.5), M_PI / 4, M_PI / 2).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 10.5, 0), gp_Pnt(0, 9.2, 0)).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 9.2), 0, M_PI / 2).Edge());
+  ASSERT_TRUE(wire.IsDone());
+  const TopoDS_Face band = BRepBuilderAPI_MakeFace(wire.Wire()).Face();
+  ShapeMeshOptions options;
+  options.size = 1.2;
+  const ShapeMeshResult result = mesh_shape(band, options);
+  ASSERT_EQ(result.mesh.faces.size(), 1u);
+  EXPECT_EQ(result.mesh.faces[0].template_tree, "T0");
+  EXPECT_EQ(result.mesh.quads.size(), 14u) << "one quad per segment of the longer side";
+  EXPECT_EQ(result.inverted, 0);
+}
+
 TEST(ShapeMeshing, IgesInput) {
   // The bracket written as IGES (BRep mode, which keeps faces and shared edges) reads
   // back and meshes every face.

@@ -1,0 +1,85 @@
+#include "occ/band_balance.h"
+
+#include <algorithm>
+
+#include "occ/edge_discretization.h"
+#include "occ/face_boundary.h"
+#include "occ/face_corners.h"
+
+namespace tquad {
+
+namespace {
+
+// The shape edges along one side of a face, and its segment count.
+struct Side {
+  std::vector<int> edges;
+  int segments = 0;
+};
+
+}  // namespace
+
+int balance_one_quad_bands(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& segments,
+                           const std::vector<std::vector<int>>& chains) {
+  std::vector<int> chain_of(index.edge_count(), -1);
+  for (std::size_t c = 0; c < chains.size(); ++c) for (int e : chains[c]) chain_of[e] = static_cast<int>(c);
+  // Corners are chosen on a provisional discretization of the counts as they are.
+  std::vector<Vec3> nodes;
+  const std::vector<EdgeNodes> edges = discretize_edges(index, segments, nodes);
+  int balanced = 0;
+  for (int f = 0; f < index.face_count(); ++f) {
+    if (!meshed[f]) continue;
+    FaceBoundary b;
+    try {
+      b = face_boundary(index, f, edges, nodes);
+    } catch (const std::exception&) {
+      continue;  // the face's own meshing will say what is wrong
+    }
+    if (b.inner_wires > 0 || b.has_degenerate_edge) continue;
+    if (std::find(b.is_seam.begin(), b.is_seam.end(), 1) != b.is_seam.end()) continue;
+    std::vector<int> corners;
+    try {
+      corners = choose_face_corners(b, f, {}, false);
+    } catch (const std::exception&) {
+      continue;
+    }
+    if (corners.size() != 4) continue;
+    // Sides between corners, each a run of whole wire edges.
+    std::vector<Side> sides(4);
+    bool whole_edges = true;
+    const int n = static_cast<int>(b.nodes.size());
+    for (int k = 0; k < 4 && whole_edges; ++k) {
+      const int first = corners[k], last = corners[(k + 1) % 4];
+      whole_edges = std::find(b.edge_start.begin(), b.edge_start.end(), first) != b.edge_start.end();
+      sides[k].segments = ((last - first) % n + n) % n;
+      for (std::size_t j = 0; j < b.edge_start.size(); ++j) {
+        if (((b.edge_start[j] - first) % n + n) % n < sides[k].segments) sides[k].edges.push_back(b.edge_index[j]);
+      }
+    }
+    if (!whole_edges) continue;
+    for (int k = 0; k < 2; ++k) {
+      if (sides[k + 1].segments != 1 || sides[(k + 3) % 4].segments != 1) continue;
+      const Side& a = sides[k];
+      const Side& c = sides[k + 2];
+      if (a.segments == c.segments) continue;
+      const Side& shorter = a.segments < c.segments ? a : c;
+      // The longest edge of the shorter side takes the difference: a free edge alone,
+      // or else a chained edge with its whole chain (whose faces stay mapped).
+      int chosen = -1;
+      for (int e : shorter.edges) {
+        if (chain_of[e] < 0 && (chosen < 0 || segments[e] > segments[chosen])) chosen = e;
+      }
+      if (chosen < 0) {
+        for (int e : shorter.edges) if (chosen < 0 || segments[e] > segments[chosen]) chosen = e;
+      }
+      if (chosen < 0) continue;
+      const int difference = std::abs(a.segments - c.segments);
+      if (chain_of[chosen] < 0) segments[chosen] += difference;
+      else for (int e : chains[chain_of[chosen]]) segments[e] += difference;
+      ++balanced;
+      break;
+    }
+  }
+  return balanced;
+}
+
+}  // namespace tquad
