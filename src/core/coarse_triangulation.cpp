@@ -40,8 +40,13 @@ class EarCutter {
     }
     alive_.assign(n, 1);
     remaining_ = n;
-    double extent = 0;
-    for (int id : ring_) extent = std::max({extent, std::abs(points_[id].x), std::abs(points_[id].y)});
+    // Relative to the polygon's own size, not to its distance from the origin.
+    double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+    for (int id : ring_) {
+      lo_x = std::min(lo_x, points_[id].x); hi_x = std::max(hi_x, points_[id].x);
+      lo_y = std::min(lo_y, points_[id].y); hi_y = std::max(hi_y, points_[id].y);
+    }
+    const double extent = std::max(hi_x - lo_x, hi_y - lo_y);
     area_tolerance_ = 1e-12 * extent * extent;
   }
 

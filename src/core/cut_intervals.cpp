@@ -7,20 +7,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/count_fitting.h"
 #include "core/input_error.h"
 
 namespace tquad {
 
 namespace {
-
-// Opposite sides further apart than this in goal are not made equal: the templates'
-// transition costs less than the distortion.
-constexpr double kChainRatio = 1.5;
-
-int find_root(std::vector<int>& parent, int c) {
-  while (parent[c] != c) c = parent[c] = parent[parent[c]];
-  return c;
-}
 
 struct CutProblem {
   const PlanarDomain& domain;
@@ -41,6 +33,7 @@ struct CutProblem {
     for (int c = 0; c < cuts; ++c) {
       for (int p : patches_of_cut[c]) if (d.patches[p].sides.size() == 3) minimum[c] = 2;
       goal[c] = std::max(d.cuts[c].length / size, static_cast<double>(minimum[c]));
+      check_goal(goal[c], "cut " + std::to_string(c));
     }
   }
 
@@ -58,16 +51,14 @@ struct CutProblem {
 // that also faces a boundary piece takes that piece's count when it can (so the patch
 // is a mapped grid); otherwise the count fitting all its goals best.
 std::vector<std::vector<int>> equal_count_chains(const CutProblem& pr, std::vector<int>& count) {
-  std::vector<int> parent(pr.cuts);
-  for (int c = 0; c < pr.cuts; ++c) parent[c] = c;
+  CurveSets sets(pr.cuts);
   std::vector<std::vector<int>> facing(pr.cuts);  // piece counts opposite each cut
   for (const DomainPatch& patch : pr.d.patches) {
     if (patch.sides.size() != 4) continue;
     for (int k = 0; k < 2; ++k) {
       const PatchSide &a = patch.sides[k], &b = patch.sides[k + 2];
       if (a.is_cut && b.is_cut) {
-        const double ga = pr.goal[a.index], gb = pr.goal[b.index];
-        if (std::max(ga, gb) <= kChainRatio * std::min(ga, gb)) parent[find_root(parent, a.index)] = find_root(parent, b.index);
+        if (near_enough_to_chain(pr.goal[a.index], pr.goal[b.index])) sets.join(a.index, b.index);
       } else if (a.is_cut != b.is_cut) {
         const PatchSide& cut = a.is_cut ? a : b;
         const PatchSide& piece = a.is_cut ? b : a;
@@ -76,28 +67,26 @@ std::vector<std::vector<int>> equal_count_chains(const CutProblem& pr, std::vect
     }
   }
   std::map<int, std::vector<int>> members;
-  for (int c = 0; c < pr.cuts; ++c) members[find_root(parent, c)].push_back(c);
+  for (int c = 0; c < pr.cuts; ++c) members[sets.root(c)].push_back(c);
   std::vector<std::vector<int>> chains;
   for (auto& [root, chain] : members) {
     (void)root;
     int lowest = 1;
-    double lo = INFINITY, hi = 0;
-    std::vector<int> fixed;
+    std::vector<double> goals;
+    std::vector<int> fixed;  // counts of facing pieces near enough to take
     for (int c : chain) {
       lowest = std::max(lowest, pr.minimum[c]);
-      lo = std::min(lo, pr.goal[c]);
-      hi = std::max(hi, pr.goal[c]);
-      for (int n : facing[c]) if (n <= kChainRatio * pr.goal[c] && pr.goal[c] <= kChainRatio * n) fixed.push_back(n);
+      goals.push_back(pr.goal[c]);
+      for (int n : facing[c]) if (near_enough_to_chain(n, pr.goal[c])) fixed.push_back(n);
     }
-    // The candidate counts: the facing pieces' first, else every integer in range.
-    std::vector<int> candidates(fixed);
-    if (candidates.empty()) for (int n = static_cast<int>(std::floor(lo)); n <= static_cast<int>(std::ceil(hi)); ++n) candidates.push_back(n);
-    int best = lowest;
+    // A facing piece's count makes its patch a mapped grid: when there are such
+    // counts, the one nearest the goals that matches most of them; else the best fit.
+    int best = fixed.empty() ? best_common_count(goals, lowest) : lowest;
     double best_cost = INFINITY;
-    for (int n : candidates) {
+    for (int n : fixed) {
       const int m = std::max(n, lowest);
       double cost = 0;
-      for (int c : chain) cost += std::abs(m - pr.goal[c]) / pr.goal[c];
+      for (double g : goals) cost += count_cost(m, g);
       for (int f : fixed) cost += f == m ? 0.0 : 1.0;
       if (cost < best_cost - 1e-12) { best_cost = cost; best = m; }
     }
@@ -137,8 +126,8 @@ bool make_patches_even(const CutProblem& pr, const std::vector<std::vector<int>>
     double up = 0, down = 0;
     for (int c : unit.cuts) {
       can_lower = can_lower && count[c] - 1 >= pr.minimum[c];
-      up += (std::abs(count[c] + 1 - pr.goal[c]) - std::abs(count[c] - pr.goal[c])) / pr.goal[c];
-      down += (std::abs(count[c] - 1 - pr.goal[c]) - std::abs(count[c] - pr.goal[c])) / pr.goal[c];
+      up += count_cost(count[c] + 1, pr.goal[c]) - count_cost(count[c], pr.goal[c]);
+      down += count_cost(count[c] - 1, pr.goal[c]) - count_cost(count[c], pr.goal[c]);
     }
     const int step = can_lower && down < up ? -1 : 1;
     for (int c : unit.cuts) count[c] += step;

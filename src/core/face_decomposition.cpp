@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 
@@ -142,7 +143,8 @@ class LoopCoarsening {
       const int inner = inner_count(first, last, size());
       if (inner > most) { most = inner; best_first = first; best_last = last; }
     }
-    if (!split(best_first, best_last)) throw InputError("a loop has fewer than 3 points");
+    // check_domain refused loops of fewer than 3 points.
+    if (!split(best_first, best_last)) throw std::logic_error("a loop of 3 or more points has no piece to split");
   }
 
   const std::vector<Vec3>& points_;
@@ -207,11 +209,17 @@ class Decomposer {
     split_by_feature_size();
   }
 
+  // Triangulates, clears blocked and sliver cuts by adding coarse vertices, and
+  // builds the patches. Ends within kRounds: after that, or when nothing more can be
+  // added, every boundary point becomes a coarse vertex, and if even that
+  // triangulation has a cut outside the domain the boundary is refused.
   FaceDecomposition run() {
+    constexpr int kRounds = 12;
     FaceDecomposition out;
     std::vector<std::set<int>> coarse;
     for (const LoopCoarsening& c : coarsening_) coarse.push_back(c.coarse());
     for (int round = 0;; ++round) {
+      const bool last_resort = all_points(coarse);
       const CoarsePolygon polygon(coarse);
       std::vector<CoarseTriangle> triangles;
       try {
@@ -222,9 +230,8 @@ class Decomposer {
                  piece_segments(polygon, b) == 1;
         });
       } catch (const TriangulationFailure& e) {
-        if (all_points(coarse)) throw InputError(std::string("the boundary cannot be cut into patches: ") + e.what());
+        if (last_resort) throw InputError(std::string("the boundary cannot be cut into patches: ") + e.what());
         coarse = every_point();
-        ++out.refinements;
         continue;
       }
       // (loop, segment): met by a cut (must be cleared), or meeting a cut's end at a
@@ -237,22 +244,23 @@ class Decomposer {
           if (x < y && !polygon.is_piece(x, y) && !polygon.is_piece(y, x)) check_cut(polygon, x, y, blocked, sliver);
         }
       }
+      if (last_resort) {
+        if (!blocked.empty()) throw InputError("the boundary cannot be cut into patches: a cut leaves the domain");
+        build(polygon, triangles, out);
+        return out;
+      }
       bool added = false;
       for (const auto& [loop, segment] : blocked) added = coarsening_[loop].split_piece_at(segment) || added;
       if (blocked.empty()) {
-        if (round < 8) for (const auto& [loop, segment] : sliver) added = coarsening_[loop].split_piece_at(segment) || added;
+        if (round < kRounds) for (const auto& [loop, segment] : sliver) added = coarsening_[loop].split_piece_at(segment) || added;
         if (!added) {
           build(polygon, triangles, out);
           return out;
         }
       }
-      ++out.refinements;
       coarse.clear();
       for (const LoopCoarsening& c : coarsening_) coarse.push_back(c.coarse());
-      if (!added || round > 12) {
-        if (all_points(coarse)) throw InputError("the boundary cannot be cut into patches: a cut leaves the domain");
-        coarse = every_point();
-      }
+      if (!added || round >= kRounds) coarse = every_point();
     }
   }
 
@@ -279,7 +287,7 @@ class Decomposer {
           const double chord = distance(point(l, first), point(l, last));
           // Points of this piece and its two neighbours are not "in front" of it.
           const int skip_from = pieces[wrap(k - 1, count)].first, skip_to = pieces[(k + 1) % count].second;
-          const int skipped = count >= 3 ? inner_count(skip_from, skip_to, n) + 2 : n;
+          const int skipped = inner_count(skip_from, skip_to, n) + 2;  // a loop has 3+ coarse vertices
           double gap = INFINITY;
           for (int m = 0; m < d_.loop_count(); ++m) {
             for (int i = 0; i < loop_size(m); ++i) {
@@ -483,7 +491,9 @@ std::string loop_name(int l) { return l == 0 ? "the outer loop" : "hole " + std:
 // A domain the decomposition can work on: finite points, no zero-length segment,
 // loops oriented as PlanarDomain says, and no two boundary segments meeting (a loop
 // crossing itself, a hole crossing or touching another loop).
-void check_domain(const PlanarDomain& domain) {
+}  // namespace
+
+void check_planar_domain(const PlanarDomain& domain) {
   if (domain.loops.empty()) throw InputError("the domain has no loop");
   std::vector<PlanarSegment> segments;
   std::vector<std::pair<int, int>> where;  // (loop, segment)
@@ -491,6 +501,10 @@ void check_domain(const PlanarDomain& domain) {
     const std::vector<Vec3>& p = domain.loops[l].points;
     const int n = static_cast<int>(p.size());
     if (n < 3) throw InputError(loop_name(l) + " has fewer than 3 points");
+    if (!domain.loops[l].vertex.empty() && static_cast<int>(domain.loops[l].vertex.size()) != n) {
+      throw InputError(loop_name(l) + " has " + std::to_string(domain.loops[l].vertex.size()) +
+                       " vertex flags for " + std::to_string(n) + " points");
+    }
     for (int i = 0; i < n; ++i) {
       if (!std::isfinite(p[i].x) || !std::isfinite(p[i].y)) {
         throw InputError(loop_name(l) + ": point " + std::to_string(i) + " is not a finite number");
@@ -530,8 +544,6 @@ void check_domain(const PlanarDomain& domain) {
   }
 }
 
-}  // namespace
-
 int piece_segments(const PlanarDomain& domain, const BoundaryPiece& piece) {
   const int n = static_cast<int>(domain.loops[piece.loop].points.size());
   const int s = wrap(piece.last - piece.first, n);
@@ -554,7 +566,7 @@ std::vector<int> side_nodes(const PlanarDomain& domain, const FaceDecomposition&
 }
 
 FaceDecomposition decompose_domain(const PlanarDomain& domain) {
-  check_domain(domain);
+  check_planar_domain(domain);
   return Decomposer(domain).run();
 }
 

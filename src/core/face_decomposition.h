@@ -6,13 +6,16 @@
 //  1. Coarse vertices on every loop: the CAD vertices where the boundary turns
 //     sharply (they must stay patch corners), then more points so that no piece of
 //     boundary between two coarse vertices turns by more than 60 degrees (a circle
-//     gets 6), and every loop has at least 3.
+//     gets 6) or is longer than twice the gap in front of it (the local feature
+//     size), each new piece keeping 2 segments or more, and every loop has at least 3.
 //  2. A triangulation of the polygon of coarse vertices (coarse_triangulation.h).
 //     Its diagonals are the cuts, straight in the chart. A cut that meets the real
-//     boundary (a piece bulging across its chord) adds a coarse vertex in that piece
-//     and the triangulation is made again; in the end, every boundary point can be a
-//     coarse vertex, where the cuts are true diagonals of the boundary polygon, so
-//     the method succeeds on every simple domain.
+//     boundary (a piece bulging across its chord), or leaves it at a sliver angle,
+//     adds a coarse vertex in that piece and the triangulation is made again. In the
+//     end every boundary point can be a coarse vertex, where the cuts are true
+//     diagonals of the boundary polygon; only when even that fails (nearly collinear
+//     points that the ear test and the cut test judge differently) is the domain
+//     refused.
 //  3. Triangles are paired across cuts into four-sided patches, greedily by the shape
 //     of the merged quadrilateral (its corners measured on the real boundary pieces),
 //     when every corner lies between 25 and 155 degrees; unpaired triangles stay
@@ -59,13 +62,16 @@ struct FaceDecomposition {
   std::vector<BoundaryPiece> pieces;
   std::vector<CutCurve> cuts;
   std::vector<DomainPatch> patches;
-  int refinements = 0;  // times step 2 added coarse vertices to clear a cut
 };
 
 // Throws InputError, naming the loop and point or segment, when a loop has fewer than
-// 3 points, a coordinate that is not finite, two equal consecutive points, or the
-// wrong orientation, or when boundary segments meet (a loop crossing itself, a hole
-// crossing or touching another loop).
+// 3 points, a coordinate that is not finite, two equal consecutive points, vertex
+// flags that do not match its points, or the wrong orientation, or when boundary
+// segments meet (a loop crossing itself, a hole crossing or touching another loop),
+// or a hole lies outside the outer loop or inside another hole.
+void check_planar_domain(const PlanarDomain& domain);
+
+// Checks the domain (check_planar_domain), then decomposes it.
 FaceDecomposition decompose_domain(const PlanarDomain& domain);
 
 // The domain node ids along a patch side, from its start to its end; `cut_nodes[c]`

@@ -27,12 +27,11 @@ int nearest_reachable_outer(const PlanarDomain& d, int rim, int taken) {
 std::optional<FaceDecomposition> o_grid_decomposition(const PlanarDomain& d, int rim_point) {
   if (d.loop_count() != 2) return std::nullopt;
   const int rim_size = static_cast<int>(d.loops[1].points.size());
-  const int outer_size = static_cast<int>(d.loops[0].points.size());
   const int i1 = rim_point % rim_size, i2 = (i1 + rim_size / 2) % rim_size;
   const int o1 = nearest_reachable_outer(d, i1, -1);
   if (o1 < 0 || i1 == i2) return std::nullopt;
   const int o2 = nearest_reachable_outer(d, i2, o1);
-  if (o2 < 0 || outer_size < 2) return std::nullopt;
+  if (o2 < 0) return std::nullopt;
   // The two cuts must not cross each other.
   const Vec3 &a1 = d.loops[0].points[o1], &b1 = d.loops[1].points[i1];
   const Vec3 &a2 = d.loops[0].points[o2], &b2 = d.loops[1].points[i2];

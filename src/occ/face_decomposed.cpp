@@ -9,6 +9,7 @@
 
 #include "core/cut_intervals.h"
 #include "core/decomposed_mesher.h"
+#include "core/face_decomposition.h"
 #include "core/input_error.h"
 #include "core/o_grid.h"
 
@@ -66,6 +67,11 @@ class FaceChart {
     if (signed_uv_area(b.uv) < 0) chart_.mirror = -1;
     add_loop(b.uv, b.nodes, vertex_nodes, false);
     for (const NodeLoop& hole : b.holes) add_loop(hole.uv, hole.nodes, vertex_nodes, true);
+    try {
+      check_planar_domain(domain_);  // every route on this chart starts from a valid domain
+    } catch (const InputError& e) {
+      throw InputError(name_ + " in its (u, v) chart: " + e.what());
+    }
   }
 
   const PlanarDomain& domain() const { return domain_; }
@@ -163,7 +169,7 @@ FaceMeshResult mesh_face_o_grid(const TopoDS_Face& face, int face_index, const F
     try {
       FaceMeshResult r = chart.mesh(*halves, edge_size, options);
       if (!best || better_face_mesh(r, *best)) best = std::move(r);
-    } catch (const InputError& e) {
+    } catch (const std::exception& e) {  // the other places are still tried
       problem = e.what();
     }
   }

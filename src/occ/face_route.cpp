@@ -1,5 +1,7 @@
 #include "occ/face_route.h"
 
+#include <Standard_Failure.hxx>
+
 #include <cstdio>
 #include <optional>
 
@@ -64,12 +66,12 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
         refusal = e.what();
       }
     }
-    decompose = !user_corners;  // the user's corners are an instruction
+    decompose = decompose && !user_corners;  // the user's corners are an instruction
   }
   if (decompose && (!best || best->inverted > 0 || best->collapsed > 0 || best->worst_corner < kGoodEnoughCorner)) {
     try {
       keep(mesh_face_decomposed(index.face(f), f, boundary, nodes, index.vertex_count(), size, options.templates));
-    } catch (const InputError& e) {
+    } catch (const std::exception& e) {  // a mesh already found stays
       if (!best) refusal = e.what();
     }
   }
@@ -104,6 +106,10 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
     outcome.reason = e.what();
   } catch (const std::exception& e) {
     outcome.reason = std::string("face ") + std::to_string(f) + ": internal failure: " + e.what();
+  } catch (const Standard_Failure& e) {  // OpenCASCADE's, which is no std::exception
+    outcome.reason = std::string("face ") + std::to_string(f) + ": OpenCASCADE failure: " + e.GetMessageString();
+  } catch (...) {
+    outcome.reason = std::string("face ") + std::to_string(f) + ": internal failure";
   }
   return outcome;
 }

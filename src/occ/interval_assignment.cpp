@@ -11,6 +11,7 @@
 #include <deque>
 #include <map>
 
+#include "core/count_fitting.h"
 #include "core/input_error.h"
 #include "occ/band_balance.h"
 
@@ -67,8 +68,8 @@ struct Changer {
       const int n = segments[e];
       const double ideal = std::max(lengths[e] / size, 1e-9);
       can_lower = can_lower && n - 1 >= std::max(1, minimum.empty() ? 1 : minimum[e]);
-      up += (std::abs(n + 1 - ideal) - std::abs(n - ideal)) / ideal;
-      down += (std::abs(n - 1 - ideal) - std::abs(n - ideal)) / ideal;
+      up += count_cost(n + 1, ideal) - count_cost(n, ideal);
+      down += count_cost(n - 1, ideal) - count_cost(n, ideal);
     }
     const int step = can_lower && down < up ? -1 : 1;
     for (int e : unit.edges) {
@@ -178,27 +179,6 @@ void opposite_edge_pairs(const ShapeIndex& index, int face, std::vector<std::pai
   for (int k = 0; k < 2; ++k) if (edges[k] != edges[k + 2]) pairs.push_back({edges[k], edges[k + 2]});
 }
 
-int find_root(std::vector<int>& parent, int e) {
-  while (parent[e] != e) e = parent[e] = parent[parent[e]];
-  return e;
-}
-
-// The count for a chain of edges that should be equal: the integer n >= `lowest`
-// minimizing sum |n - g| / g over the chain's goals (a weighted median; the first of
-// equal costs).
-int chain_count(const std::vector<double>& goals, int lowest) {
-  double lo = goals[0], hi = goals[0];
-  for (double g : goals) { lo = std::min(lo, g); hi = std::max(hi, g); }
-  int best = lowest;
-  double best_cost = INFINITY;
-  for (int n = std::max(lowest, static_cast<int>(std::floor(lo))); n <= std::max(lowest, static_cast<int>(std::ceil(hi))); ++n) {
-    double cost = 0;
-    for (double g : goals) cost += std::abs(n - g) / g;
-    if (cost < best_cost - 1e-12) { best_cost = cost; best = n; }
-  }
-  return best;
-}
-
 }  // namespace
 
 IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector<char>& meshed,
@@ -208,21 +188,18 @@ IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector
   const std::vector<int> before = segments;
   auto lowest = [&](int e) { return std::max(1, floor.empty() ? 1 : floor[e]); };
   auto goal = [&](int e) { return std::max(lengths[e] / size, static_cast<double>(lowest(e))); };
-  // Chains: opposite edges of four-edge faces, joined when their goals are within
-  // kChainRatio of each other (further apart, equal counts would distort one of them
-  // more than the templates' transition costs).
-  constexpr double kChainRatio = 1.5;
-  std::vector<int> parent(edges);
-  for (int e = 0; e < edges; ++e) parent[e] = e;
+  // Chains: opposite edges of four-edge faces, joined when their goals are near
+  // enough (count_fitting.h).
+  CurveSets sets(edges);
+  for (int e = 0; e < edges; ++e) if (segments[e] > 0) check_goal(goal(e), "edge " + std::to_string(e));
   std::vector<std::pair<int, int>> pairs;
   for (int f = 0; f < index.face_count(); ++f) if (meshed[f]) opposite_edge_pairs(index, f, pairs);
   for (const auto& [a, b] : pairs) {
     if (segments[a] <= 0 || segments[b] <= 0) continue;
-    if (std::max(goal(a), goal(b)) > kChainRatio * std::min(goal(a), goal(b))) continue;
-    parent[find_root(parent, a)] = find_root(parent, b);
+    if (near_enough_to_chain(goal(a), goal(b))) sets.join(a, b);
   }
   std::vector<std::vector<int>> members(edges);
-  for (int e = 0; e < edges; ++e) if (segments[e] > 0) members[find_root(parent, e)].push_back(e);
+  for (int e = 0; e < edges; ++e) if (segments[e] > 0) members[sets.root(e)].push_back(e);
   IntervalReport report;
   std::vector<std::vector<int>> chains;
   for (const std::vector<int>& chain : members) {
@@ -233,7 +210,7 @@ IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector
     std::vector<double> goals;
     int low = 1;
     for (int e : chain) { goals.push_back(goal(e)); low = std::max(low, lowest(e)); }
-    const int n = chain_count(goals, low);
+    const int n = best_common_count(goals, low);
     for (int e : chain) segments[e] = n;
   }
   // Bands one segment wide need equal long sides (band_balance.h).

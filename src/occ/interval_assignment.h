@@ -45,7 +45,8 @@ int face_boundary_total(const ShapeIndex& index, int face, const std::vector<int
 // by four edges are joined into chains (as in mapped meshing), each chain gets the
 // one count that best fits all its edges' length / size (at least every floor), so
 // those faces are mapped grids (T0, the best elements) and even by construction;
-// the other faces are then made even by assign_even_intervals.
+// bands one segment wide get equal long sides (band_balance.h); the other faces are
+// then made even by make_faces_even, changing whole chains or single edges.
 struct IntervalReport {
   std::vector<IntervalChange> changes;  // against the counts given
   int chains = 0;                       // chains of two or more edges

@@ -90,19 +90,33 @@ void drop_unused_nodes(ShapeMesh& mesh) {
   for (Quad& q : mesh.quads) for (NodeId& n : q) n = new_id[n];
 }
 
-// Runs job(i) for i in [0, count) on `threads` workers.
+// Runs job(i) for i in [0, count) on `threads` workers. An exception in a job stops
+// the workers at their next job and is rethrown here once all have joined (an
+// exception leaving a std::thread would end the process).
 template <typename Job>
 void run_parallel(int count, int threads, const Job& job) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   threads = std::min(threads, std::max(1, count));
   std::atomic<int> next{0};
+  std::atomic<bool> failed{false};
+  std::exception_ptr first_failure;
+  std::mutex failure_mutex;
   std::vector<std::thread> workers;
   for (int t = 0; t < threads; ++t) {
     workers.emplace_back([&] {
-      for (int i = next++; i < count; i = next++) job(i);
+      for (int i = next++; i < count && !failed; i = next++) {
+        try {
+          job(i);
+        } catch (...) {
+          const std::lock_guard<std::mutex> lock(failure_mutex);
+          if (!first_failure) first_failure = std::current_exception();
+          failed = true;
+        }
+      }
     });
   }
   for (std::thread& w : workers) w.join();
+  if (first_failure) std::rethrow_exception(first_failure);
 }
 
 // The pipeline's state, stage after stage (as OpenCASCADE's IMeshTools context):
@@ -176,6 +190,7 @@ class ShapeMeshContext {
     result_.changes = intervals.changes;
     result_.interval_chains = intervals.chains;
     result_.chained_edges = intervals.chained_edges;
+    result_.balanced_bands = intervals.balanced_bands;
   }
 
   // Stage "discretize edges": every edge once, shared by its faces.
@@ -190,11 +205,13 @@ class ShapeMeshContext {
   void mesh_faces() {
     outcomes_.assign(index_.face_count(), FaceOutcome{});
     const int total = static_cast<int>(std::count(meshed_.begin(), meshed_.end(), 1));
-    std::atomic<int> done{0};
+    int done = 0;  // counted under the progress lock, so reports never go backwards
     run_parallel(index_.face_count(), options_.threads, [&](int f) {
       if (!meshed_[f] || cancelled()) return;
       outcomes_[f] = mesh_one_face(index_, f, edges_, result_.mesh.nodes, options_, result_.size);
-      report("mesh faces", ++done, total);
+      if (!options_.progress) return;
+      const std::lock_guard<std::mutex> lock(progress_mutex_);
+      options_.progress(MeshProgress{"mesh faces", ++done, total});
     });
   }
 

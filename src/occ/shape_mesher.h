@@ -9,7 +9,7 @@
 //   assemble         the refusal policy, then the faces numbered in order, so the
 //                    output is the same whatever the number of threads.
 // Small faces refused for inverted quads send the pipeline back to "assign
-// intervals" with finer edges (twice at most). Progress and cancel hooks are in the
+// intervals" with finer edges (four times at most). Progress and cancel hooks are in the
 // options.
 #pragma once
 
@@ -68,14 +68,15 @@ struct ShapeMeshOptions {
 struct ShapeMeshResult {
   ShapeMesh mesh;
   double size = 0.0;                     // the target size used
-  std::vector<IntervalChange> changes;   // edge counts changed for parity
+  std::vector<IntervalChange> changes;   // edge counts changed by the interval assignment
   long long projected_faces = 0;         // faces meshed by the 3D route
   long long inverted = 0;                // quads still inverted after repair
   std::map<std::string, double> stage_seconds;  // wall time per stage, summed over rounds
   long long off_surface = 0;             // quads cutting across their surface (face_mesher.h)
-  int refinement_rounds = 0;
+  int refinement_rounds = 0;            // times small faces' edges were doubled
   int interval_chains = 0;               // chains of opposite edges given one count
-  int chained_edges = 0;             // times edges of faces with inverted quads were doubled
+  int chained_edges = 0;                 // edges in those chains
+  int balanced_bands = 0;                // faces one segment wide given equal long sides
   double template_seconds = 0;           // summed over faces (all threads)
   double placement_seconds = 0;          // interior nodes onto the surfaces, summed
 };
