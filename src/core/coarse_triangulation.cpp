@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 
@@ -153,13 +154,21 @@ std::vector<int> bridged_ring(const Loops& loops) {
   for (int l : order) {
     const std::vector<int>& hole = loops.ids[l];
     const int hn = static_cast<int>(hole.size()), rn = static_cast<int>(ring.size());
+    // Candidate bridges, shortest first, from at most kBridgeStarts places of the
+    // hole (all of them when none of those gives a bridge): memory stays O(ring)
+    // per start even for holes of thousands of points.
+    constexpr int kBridgeStarts = 64;
+    std::vector<int> starts;
+    for (int k = 0; k < std::min(hn, kBridgeStarts); ++k) starts.push_back(k * hn / std::min(hn, kBridgeStarts));
     std::vector<std::pair<double, std::pair<int, int>>> candidates;  // (length, (hole pos, ring pos))
-    for (int h = 0; h < hn; ++h) {
-      for (int r = 0; r < rn; ++r) {
-        candidates.push_back({distance(loops.points[hole[h]], loops.points[ring[r]]), {h, r}});
+    auto add_candidates = [&](const std::vector<int>& from) {
+      candidates.clear();
+      for (int h : from) {
+        for (int r = 0; r < rn; ++r) candidates.push_back({distance(loops.points[hole[h]], loops.points[ring[r]]), {h, r}});
       }
-    }
-    std::sort(candidates.begin(), candidates.end());
+      std::sort(candidates.begin(), candidates.end());
+    };
+    add_candidates(starts);
     auto blocked = [&](const Vec3& a, const Vec3& b, int ida, int idb, const std::vector<int>& loop) {
       const int n = static_cast<int>(loop.size());
       for (int k = 0; k < n; ++k) {
@@ -170,25 +179,33 @@ std::vector<int> bridged_ring(const Loops& loops) {
       return false;
     };
     bool done = false;
-    for (const auto& [length, where] : candidates) {
-      const auto [h, r] = where;
-      const int ih = hole[h], ir = ring[r];
-      const Vec3 &ph = loops.points[ih], &pr = loops.points[ir];
-      if (length == 0) continue;
-      if (!inside_corner(loops.points[ring[(r + rn - 1) % rn]], pr, loops.points[ring[(r + 1) % rn]], ph)) continue;
-      if (!inside_corner(loops.points[hole[(h + hn - 1) % hn]], ph, loops.points[hole[(h + 1) % hn]], pr)) continue;
-      bool clear = !blocked(ph, pr, ih, ir, ring);
-      for (std::size_t o = 1; clear && o < loops.ids.size(); ++o) {
-        if (!joined[o]) clear = !blocked(ph, pr, ih, ir, loops.ids[o]);
+    for (int attempt = 0; attempt < 2 && !done; ++attempt) {
+      if (attempt == 1) {
+        if (static_cast<int>(starts.size()) == hn) break;
+        std::vector<int> every(hn);
+        for (int h = 0; h < hn; ++h) every[h] = h;
+        add_candidates(every);
       }
-      if (!clear) continue;
-      // ring[..r], hole[h], hole[h+1], ..., hole[h], ring[r], ring[r+1..]
-      std::vector<int> merged(ring.begin(), ring.begin() + r + 1);
-      for (int k = 0; k <= hn; ++k) merged.push_back(hole[(h + k) % hn]);
-      merged.insert(merged.end(), ring.begin() + r, ring.end());
-      ring = std::move(merged);
-      done = true;
-      break;
+      for (const auto& [length, where] : candidates) {
+        const auto [h, r] = where;
+        const int ih = hole[h], ir = ring[r];
+        const Vec3 &ph = loops.points[ih], &pr = loops.points[ir];
+        if (length == 0) continue;
+        if (!inside_corner(loops.points[ring[(r + rn - 1) % rn]], pr, loops.points[ring[(r + 1) % rn]], ph)) continue;
+        if (!inside_corner(loops.points[hole[(h + hn - 1) % hn]], ph, loops.points[hole[(h + 1) % hn]], pr)) continue;
+        bool clear = !blocked(ph, pr, ih, ir, ring);
+        for (std::size_t o = 1; clear && o < loops.ids.size(); ++o) {
+          if (!joined[o]) clear = !blocked(ph, pr, ih, ir, loops.ids[o]);
+        }
+        if (!clear) continue;
+        // ring[..r], hole[h], hole[h+1], ..., hole[h], ring[r], ring[r+1..]
+        std::vector<int> merged(ring.begin(), ring.begin() + r + 1);
+        for (int k = 0; k <= hn; ++k) merged.push_back(hole[(h + k) % hn]);
+        merged.insert(merged.end(), ring.begin() + r, ring.end());
+        ring = std::move(merged);
+        done = true;
+        break;
+      }
     }
     if (!done) throw TriangulationFailure("hole " + std::to_string(l) + " cannot be bridged to the outer loop");
     joined[l] = 1;
@@ -236,21 +253,17 @@ void improve_by_flips(const Loops& loops, std::vector<CoarseTriangle>& triangles
 }
 
 void check_triangulation(const Loops& loops, const std::vector<CoarseTriangle>& triangles) {
-  std::map<std::pair<int, int>, int> directed;
+  std::set<std::pair<int, int>> loop_sides, directed;
+  for (const std::vector<int>& loop : loops.ids) {
+    for (std::size_t k = 0; k < loop.size(); ++k) loop_sides.insert({loop[k], loop[(k + 1) % loop.size()]});
+  }
   for (const CoarseTriangle& t : triangles) {
     for (int i = 0; i < 3; ++i) {
-      if (++directed[{t[i], t[(i + 1) % 3]}] > 1) throw TriangulationFailure("a triangle side is used twice");
+      if (!directed.insert({t[i], t[(i + 1) % 3]}).second) throw TriangulationFailure("a triangle side is used twice");
     }
   }
-  for (const auto& [edge, count] : directed) {
-    (void)count;
-    bool on_loop = false;
-    for (const std::vector<int>& loop : loops.ids) {
-      for (std::size_t k = 0; k < loop.size() && !on_loop; ++k) {
-        on_loop = loop[k] == edge.first && loop[(k + 1) % loop.size()] == edge.second;
-      }
-    }
-    if (!on_loop && !directed.count({edge.second, edge.first})) {
+  for (const auto& [a, b] : directed) {
+    if (!loop_sides.count({a, b}) && !directed.count({b, a})) {
       throw TriangulationFailure("a diagonal has a triangle on one side only");
     }
   }

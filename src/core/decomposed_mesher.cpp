@@ -1,5 +1,6 @@
 #include "core/decomposed_mesher.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -13,19 +14,20 @@ namespace tquad {
 
 namespace {
 
-// Mean length of the boundary segments at domain node `node`.
-double spacing_at(const PlanarDomain& domain, int node) {
-  int loop = 0;
-  while (node >= domain.offset(loop + 1)) ++loop;
+// Mean length of the boundary segments at domain node `node`; `offsets[l]` is loop
+// l's first node (and offsets.back() the point count).
+double spacing_at(const PlanarDomain& domain, const std::vector<int>& offsets, int node) {
+  const int loop = static_cast<int>(std::upper_bound(offsets.begin(), offsets.end(), node) - offsets.begin()) - 1;
   const std::vector<Vec3>& p = domain.loops[loop].points;
-  const int n = static_cast<int>(p.size()), i = node - domain.offset(loop);
+  const int n = static_cast<int>(p.size()), i = node - offsets[loop];
   return 0.5 * (distance(p[i], p[(i + 1) % n]) + distance(p[i], p[(i + n - 1) % n]));
 }
 
 // Inner nodes of a straight cut, spaced from the boundary spacing at one end to that
 // at the other (linearly), so graded boundaries stay graded across the cut.
-std::vector<int> add_cut_nodes(const PlanarDomain& domain, const CutCurve& cut, int edges, QuadMesh& mesh) {
-  const double ha = spacing_at(domain, cut.from), hb = spacing_at(domain, cut.to);
+std::vector<int> add_cut_nodes(const PlanarDomain& domain, const std::vector<int>& offsets, const CutCurve& cut,
+                               int edges, QuadMesh& mesh) {
+  const double ha = spacing_at(domain, offsets, cut.from), hb = spacing_at(domain, offsets, cut.to);
   std::vector<double> at{0.0};
   for (int j = 0; j < edges; ++j) at.push_back(at.back() + ha + (hb - ha) * (j + 0.5) / edges);
   const Vec3 a = mesh.nodes[cut.from], b = mesh.nodes[cut.to];
@@ -43,11 +45,19 @@ std::vector<int> add_cut_nodes(const PlanarDomain& domain, const CutCurve& cut, 
 
 QuadMesh mesh_decomposed_domain(const PlanarDomain& domain, const FaceDecomposition& d,
                                 const std::vector<int>& cut_counts, const MeshOptions& options) {
+  if (cut_counts.size() != d.cuts.size()) {
+    throw std::logic_error("decomposition has " + std::to_string(d.cuts.size()) + " cuts but " +
+                           std::to_string(cut_counts.size()) + " counts");
+  }
   QuadMesh mesh;
-  for (const DomainLoop& loop : domain.loops) mesh.nodes.insert(mesh.nodes.end(), loop.points.begin(), loop.points.end());
+  std::vector<int> offsets{0};
+  for (const DomainLoop& loop : domain.loops) {
+    mesh.nodes.insert(mesh.nodes.end(), loop.points.begin(), loop.points.end());
+    offsets.push_back(offsets.back() + static_cast<int>(loop.points.size()));
+  }
   std::vector<std::vector<int>> cut_nodes;
   for (std::size_t c = 0; c < d.cuts.size(); ++c) {
-    cut_nodes.push_back(add_cut_nodes(domain, d.cuts[c], cut_counts[c], mesh));
+    cut_nodes.push_back(add_cut_nodes(domain, offsets, d.cuts[c], cut_counts[c], mesh));
     mesh.subregion_cuts.emplace_back(cut_nodes.back().begin(), cut_nodes.back().end());
   }
   std::string trees;

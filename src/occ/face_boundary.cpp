@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "core/input_error.h"
+#include "core/planar_domain.h"
 #include <stdexcept>
 
 namespace tquad {
@@ -57,15 +58,7 @@ std::vector<double> loop_arc_lengths(const std::vector<NodeId>& loop, const std:
 
 }  // namespace
 
-double signed_uv_area(const std::vector<Vec3>& uv) {
-  double twice = 0;
-  for (std::size_t i = 0; i < uv.size(); ++i) {
-    const Vec3& a = uv[i];
-    const Vec3& b = uv[(i + 1) % uv.size()];
-    twice += a.x * b.y - b.x * a.y;
-  }
-  return 0.5 * twice;
-}
+double signed_uv_area(const std::vector<Vec3>& uv) { return 0.5 * twice_signed_area(uv); }
 
 bool is_disk_around_pole(const FaceBoundary& b) {
   return b.has_degenerate_edge && std::find(b.is_seam.begin(), b.is_seam.end(), 1) != b.is_seam.end();
