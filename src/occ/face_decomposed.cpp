@@ -138,12 +138,6 @@ class FaceChart {
 
 }  // namespace
 
-bool better_face_mesh(const FaceMeshResult& a, const FaceMeshResult& b) {
-  if (a.inverted != b.inverted) return a.inverted < b.inverted;
-  if (a.collapsed != b.collapsed) return a.collapsed < b.collapsed;
-  return a.worst_corner > b.worst_corner;
-}
-
 FaceMeshResult mesh_face_decomposed(const TopoDS_Face& face, int face_index, const FaceBoundary& b,
                                     const std::vector<Vec3>& nodes, int vertex_nodes, double edge_size,
                                     const MeshOptions& options) {

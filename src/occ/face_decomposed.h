@@ -32,8 +32,4 @@ FaceMeshResult mesh_face_o_grid(const TopoDS_Face& face, int face_index, const F
                                 const std::vector<Vec3>& nodes, int vertex_nodes, double edge_size,
                                 const MeshOptions& options);
 
-// Whether mesh a beats mesh b: fewer inverted quads, then fewer collapsed ones
-// (triangles in effect), then a better worst corner.
-bool better_face_mesh(const FaceMeshResult& a, const FaceMeshResult& b);
-
 }  // namespace tquad

@@ -220,6 +220,12 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
   out.worst_corner = worst;
 }
 
+bool better_face_mesh(const FaceMeshResult& a, const FaceMeshResult& b) {
+  if (a.inverted != b.inverted) return a.inverted < b.inverted;
+  if (a.collapsed != b.collapsed) return a.collapsed < b.collapsed;
+  return a.worst_corner > b.worst_corner;
+}
+
 FaceMeshResult mesh_face(const ShapeIndex& index, int face_index, const FaceBoundary& boundary,
                          const std::vector<int>& corners, const std::vector<Vec3>& nodes,
                          const MeshOptions& options) {
@@ -245,7 +251,7 @@ FaceMeshResult mesh_face(const ShapeIndex& index, int face_index, const FaceBoun
   if (!best || best->inverted > 0) {
     try {
       FaceMeshResult in_space = mesh_in_space(face, boundary, corners, nodes, options);
-      if (!best || in_space.inverted < best->inverted) best = std::move(in_space);
+      if (!best || better_face_mesh(in_space, *best)) best = std::move(in_space);
     } catch (const InputError& e) {
       if (!best) throw InputError(name + " cannot be meshed: in (u, v): " + uv_problem + "; in 3D: " + e.what());
     }

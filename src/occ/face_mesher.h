@@ -60,6 +60,10 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
                       const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
                       FaceMeshResult& out);
 
+// Whether mesh a beats mesh b of the same face: fewer inverted quads, then fewer
+// collapsed ones (triangles in effect), then a better worst corner.
+bool better_face_mesh(const FaceMeshResult& a, const FaceMeshResult& b);
+
 // Quads come counter-clockwise around the face's outer normal. Throws InputError with
 // the reason when neither route meshes the face; a mesh with inverted quads is
 // returned (counted in `inverted`) for the caller to weigh against other corners.
