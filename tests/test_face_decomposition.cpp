@@ -110,7 +110,6 @@ TEST(FaceDecomposition, EveryPatchTotalIsEvenAfterIntervalAssignment) {
   d.loops.push_back(circle_hole({2.5, 1.5}, 0.7, 10));
   const FaceDecomposition decomposition = decompose_domain(d);
   const std::vector<int> counts = assign_cut_intervals(d, decomposition, 0.37);
-  const std::vector<std::vector<int>> no_cut_nodes;
   for (const DomainPatch& p : decomposition.patches) {
     int total = 0;
     for (const PatchSide& s : p.sides) total += s.is_cut ? counts[s.index] : piece_segments(d, decomposition.pieces[s.index]);

@@ -139,16 +139,12 @@ ShapeMesh mesh_boundary_input(const MeshCommand& command, OutputFormat format, Q
 
 // --progress: one line per stage on `err`, and the faces meshed in tenths.
 std::function<void(const MeshProgress&)> progress_printer(std::ostream& err) {
-  return [&err, last_tenth = -1, most = 0](const MeshProgress& p) mutable {
+  return [&err, last_tenth = -1](const MeshProgress& p) mutable {
     if (p.stage != "mesh faces" || p.total <= 1) {
       if (p.done == 0) err << "tquad: " << p.stage << "\n";
       last_tenth = -1;
-      most = 0;
       return;
     }
-    // Workers report out of order: only a count above all seen so far is news.
-    if (p.done <= most) return;
-    most = p.done;
     const int tenth = 10 * p.done / p.total;
     if (tenth == last_tenth) return;
     last_tenth = tenth;

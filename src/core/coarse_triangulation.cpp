@@ -16,10 +16,8 @@ double smallest_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
   double smallest = M_PI;
   for (int i = 0; i < 3; ++i) {
     const Vec3 u = p[(i + 1) % 3] - p[i], v = p[(i + 2) % 3] - p[i];
-    const double lengths = norm(u) * norm(v);
-    if (lengths == 0) return 0;
-    const double cross_z = u.x * v.y - u.y * v.x;
-    smallest = std::min(smallest, std::atan2(std::abs(cross_z), u.x * v.x + u.y * v.y));
+    if (norm(u) * norm(v) == 0) return 0;
+    smallest = std::min(smallest, std::abs(signed_angle(u, v)));
   }
   return smallest;
 }

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <map>
 #include <stdexcept>
 #include <string>
 
 #include "core/count_fitting.h"
 #include "core/input_error.h"
+#include "core/parity_pairing.h"
 
 namespace tquad {
 
@@ -96,67 +96,20 @@ std::vector<std::vector<int>> equal_count_chains(const CutProblem& pr, std::vect
   return chains;
 }
 
-// A set of cuts changed together by one; it flips the parity of the patches holding
-// an odd number of them.
-struct Unit {
-  std::vector<int> cuts;
-  std::vector<int> flipped;
-};
-
-// Makes every patch even by changing units (+1 or -1, nearer the goals, never below
-// a minimum) along shortest paths between odd patches. False when some odd patch has
-// no path (the caller then retries with single cuts).
+// Makes every patch even by changing the groups of cuts (parity_pairing.h). False
+// when some odd patch cannot be reached.
 bool make_patches_even(const CutProblem& pr, const std::vector<std::vector<int>>& groups, std::vector<int>& count) {
-  std::vector<Unit> units;
+  std::vector<ParityUnit> units;
   for (const std::vector<int>& group : groups) {
-    Unit u{group, {}};
+    ParityUnit u{group, {}};
     std::map<int, int> held;
     for (int c : group) for (int p : pr.patches_of_cut[c]) ++held[p];
     for (const auto& [p, n] : held) if (n % 2 != 0) u.flipped.push_back(p);
     units.push_back(std::move(u));
   }
-  std::vector<std::vector<std::pair<int, int>>> neighbours(pr.patches);
-  for (int u = 0; u < static_cast<int>(units.size()); ++u) {
-    if (units[u].flipped.size() != 2) continue;
-    neighbours[units[u].flipped[0]].push_back({units[u].flipped[1], u});
-    neighbours[units[u].flipped[1]].push_back({units[u].flipped[0], u});
-  }
-  auto change = [&](const Unit& unit) {
-    bool can_lower = true;
-    double up = 0, down = 0;
-    for (int c : unit.cuts) {
-      can_lower = can_lower && count[c] - 1 >= pr.minimum[c];
-      up += count_cost(count[c] + 1, pr.goal[c]) - count_cost(count[c], pr.goal[c]);
-      down += count_cost(count[c] - 1, pr.goal[c]) - count_cost(count[c], pr.goal[c]);
-    }
-    const int step = can_lower && down < up ? -1 : 1;
-    for (int c : unit.cuts) count[c] += step;
-  };
   std::vector<char> odd(pr.patches);
   for (int p = 0; p < pr.patches; ++p) odd[p] = pr.patch_total(p, count) % 2 != 0;
-  for (int start = 0; start < pr.patches; ++start) {
-    if (!odd[start]) continue;
-    std::vector<std::pair<int, int>> came_from(pr.patches, {-1, -1});
-    std::vector<char> seen(pr.patches, 0);
-    std::deque<int> queue{start};
-    seen[start] = 1;
-    int found = -1;
-    while (!queue.empty() && found < 0) {
-      const int p = queue.front();
-      queue.pop_front();
-      for (const auto& [q, u] : neighbours[p]) {
-        if (seen[q]) continue;
-        seen[q] = 1;
-        came_from[q] = {p, u};
-        if (odd[q]) { found = q; break; }
-        queue.push_back(q);
-      }
-    }
-    if (found < 0) return false;
-    for (int p = found; p != start; p = came_from[p].first) change(units[came_from[p].second]);
-    odd[start] = odd[found] = 0;
-  }
-  return true;
+  return make_nodes_even(odd, units, pr.goal, pr.minimum, count) < 0;
 }
 
 }  // namespace

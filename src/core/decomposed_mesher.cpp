@@ -88,11 +88,11 @@ QuadMesh mesh_decomposed_domain(const PlanarDomain& domain, const FaceDecomposit
     trees += (trees.empty() ? "" : ",") + patch.template_tree;
   }
   // Templates repaired each patch with its cut nodes fixed. Corners still inverted or
-  // at a straight angle get a repair of the whole face that may move cut nodes too:
-  // the local max-min search only. Laplacian smoothing over a face with holes pulls
-  // nodes together (on the generated domains it collapsed 3,411 quads into
-  // triangles in 506 meshes). The result is kept when it leaves fewer inverted
-  // quads, or as many and no more collapsed ones with a better worst corner.
+  // at a straight angle get a repair of the whole face (untangle.h) that may move cut
+  // nodes too. Its Laplacian pulls nodes together on a face with holes (kept always,
+  // it collapsed 3,411 quads into triangles in 506 of the generated domains), so its
+  // result is kept only when it leaves fewer inverted quads, or as many and no more
+  // collapsed ones with a better worst corner.
   if (options.untangle) {
     const Vec3 up{0, 0, 1};
     const QualitySummary before = summarize_quality(mesh, up);

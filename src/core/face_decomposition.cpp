@@ -38,15 +38,12 @@ constexpr double kMinCutAngle = 15.0 * kDegree;
 int wrap(int i, int n) { return ((i % n) + n) % n; }
 
 // Unsigned angle between two vectors (radians, in [0, pi]).
-double angle_between(const Vec3& u, const Vec3& v) {
-  return std::atan2(std::abs(u.x * v.y - u.y * v.x), u.x * v.x + u.y * v.y);
-}
+double angle_between(const Vec3& u, const Vec3& v) { return std::abs(signed_angle(u, v)); }
 
 // Signed turn of the loop at point i (radians, > 0 to the left).
 double turn_at(const std::vector<Vec3>& p, int i) {
   const int n = static_cast<int>(p.size());
-  const Vec3 a = p[i] - p[wrap(i - 1, n)], b = p[wrap(i + 1, n)] - p[i];
-  return std::atan2(a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y);
+  return signed_angle(p[i] - p[wrap(i - 1, n)], p[wrap(i + 1, n)] - p[i]);
 }
 
 // Points first+1 .. last-1 (forward, cyclic) of a loop of n points.
@@ -376,7 +373,7 @@ class Decomposer {
     for (int i = 0; i < k; ++i) {
       const int prev = corners[wrap(i - 1, k)], here = corners[i], next = corners[(i + 1) % k];
       const Vec3 out = leaving(polygon, here, next), back = arriving_back(polygon, prev, here);
-      double angle = std::atan2(out.x * back.y - out.y * back.x, out.x * back.x + out.y * back.y);
+      double angle = signed_angle(out, back);
       if (angle < 0) angle += 2 * M_PI;
       if (angle < lo || angle > M_PI - lo) return -1;
       worst = std::min(worst, std::sin(angle));

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/vec3.h"
 
@@ -34,6 +35,11 @@ inline bool segments_meet(const Vec3& a, const Vec3& b, const Vec3& c, const Vec
   }
   return (d1 == 0 && within_box(c, d, a)) || (d2 == 0 && within_box(c, d, b)) ||
          (d3 == 0 && within_box(a, b, c)) || (d4 == 0 && within_box(a, b, d));
+}
+
+// Signed angle from u to v (radians, in (-pi, pi], > 0 counter-clockwise).
+inline double signed_angle(const Vec3& u, const Vec3& v) {
+  return std::atan2(u.x * v.y - u.y * v.x, u.x * v.x + u.y * v.y);
 }
 
 inline bool same_xy(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y; }

@@ -22,15 +22,27 @@ double lee_lo_quality(const std::array<Vec3, 4>& p, const Vec3& normal) {
   return (alpha[2] * alpha[3]) / (alpha[0] * alpha[1]);
 }
 
+double corner_scaled_jacobian(const std::array<Vec3, 4>& p, int i, const Vec3& normal) {
+  const Vec3 a = p[(i + 1) % 4] - p[i], b = p[(i + 3) % 4] - p[i];
+  const double lengths = norm(a) * norm(b), normal_length = norm(normal);
+  if (lengths == 0) return -1.0;
+  return normal_length > 0 ? dot(cross(a, b), normal) / (lengths * normal_length) : 0.0;
+}
+
 double scaled_jacobian(const std::array<Vec3, 4>& p, const Vec3& normal) {
   double worst = 1.0;
-  for (int i = 0; i < 4; ++i) {
-    const Vec3 a = p[(i + 1) % 4] - p[i], b = p[(i + 3) % 4] - p[i];
-    const double lengths = norm(a) * norm(b);
-    const double value = lengths > 0 ? dot(cross(a, b), normal) / lengths : -1.0;
-    worst = std::min(worst, value);
-  }
+  for (int i = 0; i < 4; ++i) worst = std::min(worst, corner_scaled_jacobian(p, i, normal));
   return worst;
+}
+
+bool is_collapsed(const std::array<Vec3, 4>& p) {
+  double shortest = INFINITY, longest = 0;
+  for (int i = 0; i < 4; ++i) {
+    const double edge = distance(p[i], p[(i + 1) % 4]);
+    shortest = std::min(shortest, edge);
+    longest = std::max(longest, edge);
+  }
+  return shortest < kCollapsedEdgeRatio * longest;
 }
 
 namespace {
@@ -72,13 +84,7 @@ QualitySummary summarize_quality(const std::vector<Vec3>& nodes, const std::vect
     const double j = scaled_jacobian(p, normal);
     lee_lo.add(lee_lo_quality(p, normal));
     jacobian.add(j);
-    double shortest = INFINITY, longest = 0;
-    for (int i = 0; i < 4; ++i) {
-      const double edge = distance(p[i], p[(i + 1) % 4]);
-      shortest = std::min(shortest, edge);
-      longest = std::max(longest, edge);
-    }
-    if (shortest < kCollapsedEdgeRatio * longest) ++summary.collapsed;
+    if (is_collapsed(p)) ++summary.collapsed;
     if (j < -kInvertedBelow) ++summary.inverted;
     else if (j <= kDegenerateUpTo) ++summary.degenerate;
   }

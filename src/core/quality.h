@@ -20,6 +20,10 @@ double lee_lo_quality(const std::array<Vec3, 4>& quad, const Vec3& normal);
 // rectangle, 0 for a 180-degree corner, negative for an inverted corner.
 double scaled_jacobian(const std::array<Vec3, 4>& quad, const Vec3& normal);
 
+// The same at corner i alone, signed by `normal` (any length): -1 when a side at the
+// corner has zero length, 0 when the normal is zero.
+double corner_scaled_jacobian(const std::array<Vec3, 4>& quad, int i, const Vec3& normal);
+
 struct QualityStats {
   double min = 0, avg = 0, max = 0, std = 0;
 };
@@ -39,6 +43,7 @@ constexpr double kDegenerateUpTo = 1e-6;
 // A quad whose shortest edge is under this fraction of its longest is a triangle in
 // effect: its corners' scaled Jacobians can all look fine, so it is counted apart.
 constexpr double kCollapsedEdgeRatio = 1e-3;
+bool is_collapsed(const std::array<Vec3, 4>& quad);
 
 struct QualitySummary {
   QualityStats lee_lo;

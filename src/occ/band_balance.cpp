@@ -1,5 +1,7 @@
 #include "occ/band_balance.h"
 
+#include <TopExp_Explorer.hxx>
+
 #include <algorithm>
 
 #include "occ/edge_discretization.h"
@@ -22,25 +24,36 @@ int balance_one_quad_bands(const ShapeIndex& index, const std::vector<char>& mes
                            const std::vector<std::vector<int>>& chains) {
   std::vector<int> chain_of(index.edge_count(), -1);
   for (std::size_t c = 0; c < chains.size(); ++c) for (int e : chains[c]) chain_of[e] = static_cast<int>(c);
-  // Corners are chosen on a provisional discretization of the counts as they are.
-  std::vector<Vec3> nodes;
-  const std::vector<EdgeNodes> edges = discretize_edges(index, segments, nodes);
-  int balanced = 0;
+  // Only a face with two or more one-segment edges can be such a band; its corners
+  // are chosen on a provisional discretization of its edges' counts as they are.
+  std::vector<int> candidates;
+  std::vector<int> provisional(index.edge_count(), 0);
   for (int f = 0; f < index.face_count(); ++f) {
     if (!meshed[f]) continue;
-    FaceBoundary b;
-    try {
-      b = face_boundary(index, f, edges, nodes);
-    } catch (const std::exception&) {
-      continue;  // the face's own meshing will say what is wrong
+    int single = 0;
+    for (TopExp_Explorer it(index.face(f), TopAbs_EDGE); it.More(); it.Next()) {
+      single += segments[index.edge_index(it.Current())] == 1 ? 1 : 0;
     }
-    if (b.inner_wires > 0 || b.has_degenerate_edge) continue;
-    if (std::find(b.is_seam.begin(), b.is_seam.end(), 1) != b.is_seam.end()) continue;
+    if (single < 2) continue;
+    candidates.push_back(f);
+    for (TopExp_Explorer it(index.face(f), TopAbs_EDGE); it.More(); it.Next()) {
+      const int e = index.edge_index(it.Current());
+      provisional[e] = segments[e];
+    }
+  }
+  std::vector<Vec3> nodes;
+  const std::vector<EdgeNodes> edges = discretize_edges(index, provisional, nodes);
+  int balanced = 0;
+  for (int f : candidates) {
+    FaceBoundary b;
     std::vector<int> corners;
     try {
+      b = face_boundary(index, f, edges, nodes);
+      if (b.inner_wires > 0 || b.has_degenerate_edge) continue;
+      if (std::find(b.is_seam.begin(), b.is_seam.end(), 1) != b.is_seam.end()) continue;
       corners = choose_face_corners(b, f, {}, false);
-    } catch (const std::exception&) {
-      continue;
+    } catch (...) {
+      continue;  // the face's own meshing will say what is wrong (a missing pcurve, ...)
     }
     if (corners.size() != 4) continue;
     // Sides between corners, each a run of whole wire edges.

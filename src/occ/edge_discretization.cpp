@@ -11,11 +11,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "occ/occ_vec.h"
+
 namespace tquad {
 
 namespace {
-
-Vec3 to_vec3(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
 TopoDS_Edge forward(const TopoDS_Edge& e) { return TopoDS::Edge(e.Oriented(TopAbs_FORWARD)); }
 
@@ -56,7 +56,12 @@ std::vector<int> edge_turn_minimums(const ShapeIndex& index) {
 }
 
 std::vector<int> edge_segment_counts(const ShapeIndex& index, double size, std::vector<double>& lengths) {
-  std::vector<int> segments = edge_turn_minimums(index);
+  return edge_segment_counts(index, size, edge_turn_minimums(index), lengths);
+}
+
+std::vector<int> edge_segment_counts(const ShapeIndex& index, double size, const std::vector<int>& turn_minimums,
+                                     std::vector<double>& lengths) {
+  std::vector<int> segments = turn_minimums;
   lengths.assign(index.edge_count(), 0.0);
   for (int e = 0; e < index.edge_count(); ++e) {
     const TopoDS_Edge edge = forward(index.edge(e));

@@ -25,6 +25,9 @@ std::vector<int> edge_turn_minimums(const ShapeIndex& index);
 // at least one per 45 degrees of the curve's turning; degenerate edges get 0.
 std::vector<int> edge_segment_counts(const ShapeIndex& index, double size,
                                      std::vector<double>& lengths);
+// The same with the turning minimums already computed (edge_turn_minimums).
+std::vector<int> edge_segment_counts(const ShapeIndex& index, double size, const std::vector<int>& turn_minimums,
+                                     std::vector<double>& lengths);
 
 // Places the nodes: vertices (nodes 0 .. vertex_count-1), then the inner nodes of each
 // edge with segments[e] > 0 (edges of unmeshed faces can be given 0 and are skipped).

@@ -15,13 +15,12 @@
 
 #include "core/input_error.h"
 #include "core/planar_domain.h"
+#include "occ/occ_vec.h"
 #include <stdexcept>
 
 namespace tquad {
 
 namespace {
-
-Vec3 to_vec3(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
 
 // Unit tangent of an edge occurrence, in its direction of travel, at parameter t.
 Vec3 travel_tangent(const TopoDS_Edge& occurrence, double t) {

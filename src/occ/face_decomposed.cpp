@@ -12,16 +12,12 @@
 #include "core/face_decomposition.h"
 #include "core/input_error.h"
 #include "core/o_grid.h"
+#include "occ/occ_vec.h"
 
 namespace tquad {
 
 namespace {
 
-Vec3 to_vec3(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // (u, v) <-> chart: x = mirror * su * u, y = sv * v.
 struct Chart {

@@ -6,22 +6,19 @@
 #include <BRep_Tool.hxx>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <optional>
 
 #include "core/input_error.h"
 #include "core/planar_self_intersection.h"
 #include "core/quality.h"
+#include "occ/occ_vec.h"
 
 namespace tquad {
 
 namespace {
 
-Vec3 to_vec3(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The quads of a template mesh in the face's local numbering, reversed when the loop
 // runs clockwise around the outer normal.
@@ -147,72 +144,62 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
                       FaceMeshResult& out) {
   const BRepAdaptor_Surface surface(face);
   const bool reversed = face.Orientation() == TopAbs_REVERSED;
-  // The outer normal at parameters (u, v); zero where the surface is singular.
-  auto outer_normal = [&](const Vec3& uv) {
+  const auto to_uv = [&](const Vec3& p) { return polar ? polar_to_uv(*polar, p) : p; };
+  // The outer normal at parameters (u, v), zero where the surface is singular (a
+  // pole, a collapsed side: its direction is noise there).
+  const auto outer_normal = [&](const Vec3& uv) {
     gp_Pnt p;
     gp_Vec du, dv;
     surface.D1(uv.x, uv.y, p, du, dv);
-    gp_Vec n = du.Crossed(dv);
-    // Singular there (a pole, a collapsed side): the direction is rounding noise.
     if (singular_normal(du, dv)) return Vec3{};
+    gp_Vec n = du.Crossed(dv);
     if (reversed) n.Reverse();
-    return Vec3{n.X(), n.Y(), n.Z()};
+    return to_vec3(n);
   };
   // Each corner is checked against the normal at its own node, so a quad warped on a
   // strongly curved face is judged where its corners are; where the surface is
-  // singular at the node (a pole), the normal at the quad's centre stands in.
+  // singular at the node (a pole), the normal at the quad's centre stands in, and
+  // where it is singular there too, the quad's own (the diagonals' cross product).
   std::vector<Vec3> normals(param.size());
-  for (std::size_t i = 0; i < param.size(); ++i) normals[i] = outer_normal(polar ? polar_to_uv(*polar, param[i]) : param[i]);
+  for (std::size_t i = 0; i < param.size(); ++i) normals[i] = outer_normal(to_uv(param[i]));
   long long inverted = 0, collapsed = 0, off_surface = 0;
-  auto surface_point = [&](const Vec3& uv) {
-    const gp_Pnt p = surface.Value(uv.x, uv.y);
-    return Vec3{p.X(), p.Y(), p.Z()};
-  };
   double worst = 1.0;
   out.scaled_jacobian.clear();
   out.scaled_jacobian.reserve(out.quads.size());
   for (const Quad& q : out.quads) {
-    std::optional<Vec3> centre_normal;
-    bool bad = false;
+    const std::array<Vec3, 4> corner{xyz[q[0]], xyz[q[1]], xyz[q[2]], xyz[q[3]]};
+    Vec3 centre, centre_param, mean_normal;
+    for (int i = 0; i < 4; ++i) {
+      centre += 0.25 * corner[i];
+      centre_param += 0.25 * param[q[i]];
+      mean_normal += normals[q[i]];
+    }
+    std::optional<Vec3> centre_normal;  // evaluated only where a node's normal is singular
     double quad_worst = 1.0;
     for (int i = 0; i < 4; ++i) {
       Vec3 normal = normals[q[i]];
       if (norm(normal) == 0) {
-        if (!centre_normal) {
-          Vec3 centre;
-          for (NodeId n : q) centre += 0.25 * param[n];
-          centre_normal = outer_normal(polar ? polar_to_uv(*polar, centre) : centre);
-        }
+        if (!centre_normal) centre_normal = outer_normal(to_uv(centre_param));
         normal = *centre_normal;
-        // Singular all over the quad: its own normal (the diagonals' cross product).
-        if (norm(normal) == 0) normal = cross(xyz[q[2]] - xyz[q[0]], xyz[q[3]] - xyz[q[1]]);
       }
-      const Vec3 a = xyz[q[(i + 1) % 4]] - xyz[q[i]], b = xyz[q[(i + 3) % 4]] - xyz[q[i]];
-      const double scale = norm(a) * norm(b) * norm(normal);
-      const double jacobian = scale > 0 ? dot(cross(a, b), normal) / scale : -1.0;
-      quad_worst = std::min(quad_worst, jacobian);
-      bad = bad || jacobian < -kSurfaceInvertedBelow;
+      if (norm(normal) == 0) normal = cross(corner[2] - corner[0], corner[3] - corner[1]);
+      quad_worst = std::min(quad_worst, corner_scaled_jacobian(corner, i, normal));
     }
-    double shortest = INFINITY, longest = 0;
-    for (int i = 0; i < 4; ++i) {
-      const double edge = distance(xyz[q[i]], xyz[q[(i + 1) % 4]]);
-      shortest = std::min(shortest, edge);
-      longest = std::max(longest, edge);
-    }
-    collapsed += shortest < kCollapsedEdgeRatio * longest ? 1 : 0;
-    // How far the quad's centre lies from the surface at its parameters' centre,
-    // against its longer diagonal: a quad cutting across the surface it stands for.
-    Vec3 centre, centre_param;
-    for (NodeId n : q) {
-      centre += 0.25 * xyz[n];
-      centre_param += 0.25 * param[n];
-    }
-    const Vec3 on_surface = surface_point(polar ? polar_to_uv(*polar, centre_param) : centre_param);
-    const double diagonal = std::max(distance(xyz[q[0]], xyz[q[2]]), distance(xyz[q[1]], xyz[q[3]]));
-    off_surface += distance(centre, on_surface) > kOffSurfaceRatio * diagonal ? 1 : 0;
     worst = std::min(worst, quad_worst);
     out.scaled_jacobian.push_back(quad_worst);
-    inverted += bad ? 1 : 0;
+    inverted += quad_worst < -kSurfaceInvertedBelow ? 1 : 0;
+    collapsed += is_collapsed(corner) ? 1 : 0;
+    // How far the quad's centre lies off the surface (at its parameters' centre),
+    // along its corners' mean normal, against its longer diagonal: a quad cutting
+    // across the surface it stands for (a tangential offset, as near a pole, does not
+    // count).
+    const double mean_length = norm(mean_normal);
+    if (mean_length > 0) {
+      const gp_Pnt p = surface.Value(to_uv(centre_param).x, to_uv(centre_param).y);
+      const double off = std::abs(dot(centre - to_vec3(p), mean_normal)) / mean_length;
+      const double diagonal = std::max(distance(corner[0], corner[2]), distance(corner[1], corner[3]));
+      off_surface += off > kOffSurfaceRatio * diagonal ? 1 : 0;
+    }
   }
   out.inverted = inverted;
   out.collapsed = collapsed;

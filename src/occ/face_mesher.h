@@ -31,31 +31,33 @@ struct FaceMeshResult {
   bool used_projection = false;  // the 3D fallback was used
   long long inverted = 0;        // quads still inverted after repair
   long long collapsed = 0;       // quads with an edge under kCollapsedEdgeRatio of their longest
-  long long off_surface = 0;     // quads whose centre is over kOffSurfaceRatio diagonals off the surface
+  long long off_surface = 0;     // quads cutting across the surface (kOffSurfaceRatio)
   double worst_corner = 1.0;     // lowest scaled Jacobian against the outer normal
   std::vector<double> scaled_jacobian;  // per quad, its corners signed by the outer normal
   double template_seconds = 0;   // building the template mesh (core)
   double placement_seconds = 0;  // putting its interior nodes on the surface
 };
 
-// Counts the quads with a corner inverted against the face's outer normal at that
-// corner's node (at the quad's centre where the node is a pole), and the lowest
-// corner scaled Jacobian so signed, into out.inverted / out.worst_corner.
-// param: each local node's mesh coordinates, (u, v) or polar (x, y) when `polar`;
-// xyz: each local node's position.
 // Whether the surface's normal direction at a point is not to be trusted: S_u and
 // S_v within about half a degree of parallel (the collapsed corner of a Bezier patch:
 // 1e-3 measured on capot.brep), or one of them vanishing against the other (a pole:
 // 4e-15 measured on U_Joint_2.stp).
-// A quad whose centre lies farther than this many of its diagonals from the surface
-// (at the centre of its corners' parameters) cuts across the surface it stands for.
-constexpr double kOffSurfaceRatio = 0.25;
-
 inline bool singular_normal(const gp_Vec& du, const gp_Vec& dv) {
   const double a = du.Magnitude(), b = dv.Magnitude();
   return du.Crossed(dv).Magnitude() <= 1e-2 * a * b || std::min(a, b) <= 1e-9 * std::max(a, b);
 }
 
+// A quad whose centre lies farther than this many of its diagonals off the surface
+// (along the normal at the centre of its corners' parameters) cuts across the surface
+// it stands for.
+constexpr double kOffSurfaceRatio = 0.25;
+
+// Measures a face's quads on its surface, into out: the scaled Jacobian of each quad
+// with every corner signed by the outer normal at that corner's node (at the quad's
+// centre where the surface is singular at the node), its lowest (worst_corner), the
+// quads below -kSurfaceInvertedBelow (inverted), the collapsed ones and those off the
+// surface. param: each local node's mesh coordinates, (u, v) or polar (x, y) when
+// `polar`; xyz: each local node's position.
 void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
                       const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
                       FaceMeshResult& out);

@@ -168,8 +168,8 @@ class ShapeMeshContext {
   void index_faces() {
     meshed_ = meshed_faces(index_, options_.faces);
     result_.size = options_.size > 0 ? options_.size : default_size(shape_);
-    sized_ = edge_segment_counts(index_, result_.size, lengths_);
     curvature_minimum_ = edge_turn_minimums(index_);
+    sized_ = edge_segment_counts(index_, result_.size, curvature_minimum_, lengths_);
     needed_.assign(index_.edge_count(), 0);
     for (int f = 0; f < index_.face_count(); ++f) {
       if (!meshed_[f]) continue;
@@ -183,10 +183,10 @@ class ShapeMeshContext {
   void assign_intervals() {
     segments_ = sized_;
     for (int e = 0; e < index_.edge_count(); ++e) segments_[e] = needed_[e] ? std::max(segments_[e], minimum_[e]) : 0;
-    // Parity changes never undo the curvature bound or a refinement.
-    floor_ = curvature_minimum_;
-    for (int e = 0; e < index_.edge_count(); ++e) floor_[e] = std::max(floor_[e], minimum_[e]);
-    const IntervalReport intervals = assign_shape_intervals(index_, meshed_, lengths_, result_.size, segments_, floor_);
+    // No change goes below the curvature bound or a refinement.
+    std::vector<int> floor = curvature_minimum_;
+    for (int e = 0; e < index_.edge_count(); ++e) floor[e] = std::max(floor[e], minimum_[e]);
+    const IntervalReport intervals = assign_shape_intervals(index_, meshed_, lengths_, result_.size, segments_, floor);
     result_.changes = intervals.changes;
     result_.interval_chains = intervals.chains;
     result_.chained_edges = intervals.chained_edges;
@@ -273,7 +273,7 @@ class ShapeMeshContext {
   ShapeMeshResult result_;
   std::vector<char> meshed_, needed_;
   std::vector<double> lengths_;
-  std::vector<int> sized_, minimum_, segments_, curvature_minimum_, floor_;
+  std::vector<int> sized_, minimum_, segments_, curvature_minimum_;
   std::vector<EdgeNodes> edges_;
   std::vector<FaceOutcome> outcomes_;
 };

@@ -132,7 +132,7 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
       if (cancel) return;
       try {
         const py::object answer = progress(p.stage, p.done, p.total);
-        if (!answer.is_none() && answer.cast<bool>()) cancel = true;
+        if (!answer.is_none() && py::bool_(answer)) cancel = true;  // Python's truth
       } catch (py::error_already_set& e) {
         callback_error = std::move(e);
         cancel = true;

@@ -112,6 +112,8 @@ class MeshShapeTest(unittest.TestCase):
         self.assertEqual(len(m.faces), 9)
         with self.assertRaises(tquad.Cancelled, msg="returning True cancels"):
             tquad.mesh_shape(path, progress=lambda stage, done, total: stage == "mesh faces")
+        with self.assertRaises(tquad.Cancelled, msg="any true value cancels"):
+            tquad.mesh_shape(path, progress=lambda stage, done, total: 1 if stage == "mesh faces" else None)
         def broken(stage, done, total):
             raise KeyError("from the callback")
         with self.assertRaisesRegex(KeyError, "from the callback"):
