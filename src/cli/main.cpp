@@ -91,6 +91,9 @@ int run_cli(int argc, char** argv) {
                  "the refused faces; without it a refused face stops the job (exit 2)");
   mesh->add_flag("--progress", command.progress,
                  "CAD input: print each stage, and the faces meshed in tenths, on stderr");
+  mesh->add_flag("!--no-smooth", command.shape.smooth,
+                 "CAD input: keep the template nodes where they are (no smoothing on the\n"
+                 "surface)");
   mesh->add_flag("--allow-inverted", command.shape.allow_inverted,
                  "CAD input: keep a face whose mesh still has inverted quads after repair\n"
                  "(reported) instead of refusing it");

@@ -28,10 +28,9 @@ struct CutProblem {
     for (int p = 0; p < patches; ++p) {
       for (const PatchSide& side : d.patches[p].sides) if (side.is_cut) patches_of_cut[side.index].push_back(p);
     }
-    // A cut of a three-sided patch takes at least 2 edges: the templates' minimum
-    // for three curves (a triangle of 4 edges would be one quad with a straight angle).
+    // A cut of a three-sided patch: kThreeCurveSideMinimum.
     for (int c = 0; c < cuts; ++c) {
-      for (int p : patches_of_cut[c]) if (d.patches[p].sides.size() == 3) minimum[c] = 2;
+      for (int p : patches_of_cut[c]) if (d.patches[p].sides.size() == 3) minimum[c] = kThreeCurveSideMinimum;
       goal[c] = std::max(d.cuts[c].length / size, static_cast<double>(minimum[c]));
       check_goal(goal[c], "cut " + std::to_string(c));
     }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/cut_intervals.h"
+#include "core/hole_rings.h"
 #include "core/input_error.h"
 #include "core/quality.h"
 #include "core/untangle.h"
@@ -118,8 +119,11 @@ QuadMesh mesh_decomposed_domain(const PlanarDomain& domain, const FaceDecomposit
 
 QuadMesh mesh_planar_domain(const PlanarDomain& domain, double size, const MeshOptions& options) {
   if (!(size > 0) || !std::isfinite(size)) throw InputError("the target size must be a positive number");
-  const FaceDecomposition d = decompose_domain(domain);
-  return mesh_decomposed_domain(domain, d, assign_cut_intervals(domain, d, size), options);
+  check_planar_domain(domain);
+  const RingedDomain ringed = ring_holes(domain);
+  const FaceDecomposition d = decompose_domain(ringed.inner);
+  const QuadMesh inner = mesh_decomposed_domain(ringed.inner, d, assign_cut_intervals(ringed.inner, d, size), options);
+  return join_rings(domain, ringed, inner);
 }
 
 }  // namespace tquad

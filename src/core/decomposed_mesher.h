@@ -20,7 +20,8 @@ namespace tquad {
 QuadMesh mesh_decomposed_domain(const PlanarDomain& domain, const FaceDecomposition& decomposition,
                                 const std::vector<int>& cut_counts, const MeshOptions& options);
 
-// Decomposes, assigns the cut counts from the target edge length `size`, and meshes.
+// Rings the holes (hole_rings.h), decomposes the rest, assigns the cut counts from
+// the target edge length `size`, and meshes.
 QuadMesh mesh_planar_domain(const PlanarDomain& domain, double size, const MeshOptions& options = {});
 
 }  // namespace tquad

@@ -4,40 +4,22 @@
 #include <cmath>
 #include <vector>
 
+#include "core/node_adjacency.h"
+
 namespace tquad {
 
 namespace {
 
 constexpr double kBadCorner = 1e-6;  // scaled Jacobian at or below: degenerate or inverted
 
-// Compressed adjacency lists: items of node i are items[offsets[i] .. offsets[i+1]).
-struct Adjacency {
-  std::vector<int> offsets, items;
-  template <typename Add>
-  static Adjacency build(std::size_t nodes, const Add& add_pairs) {
-    Adjacency a;
-    a.offsets.assign(nodes + 1, 0);
-    add_pairs([&](NodeId node, int) { ++a.offsets[node + 1]; });
-    for (std::size_t i = 0; i < nodes; ++i) a.offsets[i + 1] += a.offsets[i];
-    a.items.resize(a.offsets.back());
-    std::vector<int> fill(a.offsets.begin(), a.offsets.end() - 1);
-    add_pairs([&](NodeId node, int item) { a.items[fill[node]++] = item; });
-    return a;
-  }
-};
-
 class Untangler {
  public:
   Untangler(QuadMesh& mesh, int boundary_points, const std::optional<Vec3>& plane_normal)
-      : mesh_(mesh), boundary_points_(boundary_points) {
-    // Each interior edge appears once in each direction, so following directed edges
-    // gives every interior node each neighbour exactly once.
-    neighbours_ = Adjacency::build(mesh.nodes.size(), [&](auto add) {
-      for (const Quad& q : mesh.quads) for (int i = 0; i < 4; ++i) add(q[i], q[(i + 1) % 4]);
-    });
-    quads_of_ = Adjacency::build(mesh.nodes.size(), [&](auto add) {
-      for (std::size_t k = 0; k < mesh.quads.size(); ++k) for (NodeId n : mesh.quads[k]) add(n, static_cast<int>(k));
-    });
+      : mesh_(mesh),
+        boundary_points_(boundary_points),
+        adjacency_(mesh.nodes.size(), mesh.quads),
+        neighbours_(adjacency_.neighbours),
+        quads_of_(adjacency_.quads_of) {
     normals_.resize(mesh.nodes.size());
     for (std::size_t n = 0; n < mesh.nodes.size(); ++n) {
       normals_[n] = plane_normal ? *plane_normal : estimated_normal(static_cast<NodeId>(n));
@@ -229,7 +211,9 @@ class Untangler {
 
   QuadMesh& mesh_;
   int boundary_points_;
-  Adjacency neighbours_, quads_of_;
+  NodeAdjacency adjacency_;
+  const CompressedLists& neighbours_;
+  const CompressedLists& quads_of_;
   std::vector<Vec3> normals_;
 };
 

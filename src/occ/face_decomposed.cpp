@@ -10,6 +10,7 @@
 #include "core/cut_intervals.h"
 #include "core/decomposed_mesher.h"
 #include "core/face_decomposition.h"
+#include "core/hole_rings.h"
 #include "core/input_error.h"
 #include "core/o_grid.h"
 #include "occ/occ_vec.h"
@@ -68,16 +69,20 @@ class FaceChart {
     } catch (const InputError& e) {
       throw InputError(name_ + " in its (u, v) chart: " + e.what());
     }
+    ringed_ = ring_holes(domain_);
   }
 
-  const PlanarDomain& domain() const { return domain_; }
+  // The domain the routes decompose: inside the rings around the holes.
+  const PlanarDomain& domain() const { return ringed_.inner; }
   const std::string& name() const { return name_; }
 
   // The mesh of a decomposition of the domain, placed on the surface and checked.
   FaceMeshResult mesh(const FaceDecomposition& decomposition, double edge_size, const MeshOptions& options) const {
     const auto start = std::chrono::steady_clock::now();
-    const QuadMesh mesh = mesh_decomposed_domain(domain_, decomposition,
-                                                 assign_cut_intervals(domain_, decomposition, edge_size), options);
+    const PlanarDomain& inner = ringed_.inner;
+    const QuadMesh mesh = join_rings(
+        domain_, ringed_,
+        mesh_decomposed_domain(inner, decomposition, assign_cut_intervals(inner, decomposition, edge_size), options));
     FaceMeshResult out;
     out.boundary_nodes = boundary_nodes_;
     out.quads = mesh.quads;
@@ -128,6 +133,7 @@ class FaceChart {
   BRepAdaptor_Surface surface_;
   Chart chart_;
   PlanarDomain domain_;
+  RingedDomain ringed_;
   std::vector<NodeId> boundary_nodes_;
   std::vector<Vec3> uv_;
 };

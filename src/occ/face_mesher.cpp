@@ -139,29 +139,30 @@ FaceMeshResult mesh_in_space(const TopoDS_Face& face, const FaceBoundary& b, con
 
 }  // namespace
 
+Vec3 outer_normal(const BRepAdaptor_Surface& surface, bool reversed, const Vec3& uv) {
+  gp_Pnt p;
+  gp_Vec du, dv;
+  surface.D1(uv.x, uv.y, p, du, dv);
+  if (singular_normal(du, dv)) return Vec3{};
+  gp_Vec n = du.Crossed(dv);
+  if (reversed) n.Reverse();
+  return to_vec3(n);
+}
+
 void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
                       const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
                       FaceMeshResult& out) {
   const BRepAdaptor_Surface surface(face);
   const bool reversed = face.Orientation() == TopAbs_REVERSED;
   const auto to_uv = [&](const Vec3& p) { return polar ? polar_to_uv(*polar, p) : p; };
-  // The outer normal at parameters (u, v), zero where the surface is singular (a
-  // pole, a collapsed side: its direction is noise there).
-  const auto outer_normal = [&](const Vec3& uv) {
-    gp_Pnt p;
-    gp_Vec du, dv;
-    surface.D1(uv.x, uv.y, p, du, dv);
-    if (singular_normal(du, dv)) return Vec3{};
-    gp_Vec n = du.Crossed(dv);
-    if (reversed) n.Reverse();
-    return to_vec3(n);
-  };
+  out.param = param;
+  out.polar = polar;
   // Each corner is checked against the normal at its own node, so a quad warped on a
   // strongly curved face is judged where its corners are; where the surface is
   // singular at the node (a pole), the normal at the quad's centre stands in, and
   // where it is singular there too, the quad's own (the diagonals' cross product).
   std::vector<Vec3> normals(param.size());
-  for (std::size_t i = 0; i < param.size(); ++i) normals[i] = outer_normal(to_uv(param[i]));
+  for (std::size_t i = 0; i < param.size(); ++i) normals[i] = outer_normal(surface, reversed, to_uv(param[i]));
   long long inverted = 0, collapsed = 0, off_surface = 0;
   double worst = 1.0;
   out.scaled_jacobian.clear();
@@ -179,7 +180,7 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
     for (int i = 0; i < 4; ++i) {
       Vec3 normal = normals[q[i]];
       if (norm(normal) == 0) {
-        if (!centre_normal) centre_normal = outer_normal(to_uv(centre_param));
+        if (!centre_normal) centre_normal = outer_normal(surface, reversed, to_uv(centre_param));
         normal = *centre_normal;
       }
       if (norm(normal) == 0) normal = cross(corner[2] - corner[0], corner[3] - corner[1]);

@@ -8,6 +8,7 @@
 // node is projected onto the surface, warm-started from the previous node's (u, v).
 #pragma once
 
+#include <BRepAdaptor_Surface.hxx>
 #include <gp_Vec.hxx>
 
 #include <algorithm>
@@ -34,6 +35,10 @@ struct FaceMeshResult {
   long long off_surface = 0;     // quads cutting across the surface (kOffSurfaceRatio)
   double worst_corner = 1.0;     // lowest scaled Jacobian against the outer normal
   std::vector<double> scaled_jacobian;  // per quad, its corners signed by the outer normal
+  // Each local node's mesh coordinates, as check_on_surface measured them: (u, v), or
+  // polar (x, y) around `polar`'s pole.
+  std::vector<Vec3> param;
+  std::optional<PolarMap> polar;
   double template_seconds = 0;   // building the template mesh (core)
   double placement_seconds = 0;  // putting its interior nodes on the surface
 };
@@ -46,6 +51,10 @@ inline bool singular_normal(const gp_Vec& du, const gp_Vec& dv) {
   const double a = du.Magnitude(), b = dv.Magnitude();
   return du.Crossed(dv).Magnitude() <= 1e-2 * a * b || std::min(a, b) <= 1e-9 * std::max(a, b);
 }
+
+// The face's outer normal at (u, v) (not unit length), zero where the surface is
+// singular (a pole, a collapsed side: its direction is noise there).
+Vec3 outer_normal(const BRepAdaptor_Surface& surface, bool reversed, const Vec3& uv);
 
 // A quad whose centre lies farther than this many of its diagonals off the surface
 // (along the normal at the centre of its corners' parameters) cuts across the surface

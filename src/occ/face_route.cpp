@@ -8,6 +8,7 @@
 #include "core/input_error.h"
 #include "occ/face_corners.h"
 #include "occ/face_decomposed.h"
+#include "occ/surface_smoothing.h"
 
 namespace tquad {
 
@@ -36,7 +37,7 @@ constexpr double kGoodEnoughCorner = 0.3;
 //   - more holes, or when the above leave inverted quads or a worst corner under
 //     kGoodEnoughCorner: the face decomposition (face_decomposed.h), any outline;
 //   - a disk around a pole: polar templates (no decomposition).
-// The best mesh is kept; inverted quads that remain refuse the face unless
+// The best mesh is kept and smoothed on the surface; inverted quads that remain refuse the face unless
 // allow_inverted (never a silent bad mesh).
 FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary& boundary,
                               const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size) {
@@ -76,6 +77,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     }
   }
   if (!best) throw InputError(refusal);
+  if (options.smooth) smooth_face_mesh(index.face(f), nodes, *best);
   if (best->inverted > 0 && !options.allow_inverted) {
     char worst[32];
     std::snprintf(worst, sizeof worst, "%.3g", best->worst_corner);

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "core/count_fitting.h"
 #include "core/input_error.h"
@@ -94,22 +95,48 @@ std::vector<IntervalChange> assign_even_intervals(const ShapeIndex& index, const
 
 namespace {
 
-// Faces bounded by exactly four edges (one wire, no pole): their opposite edges.
-void opposite_edge_pairs(const ShapeIndex& index, int face, std::vector<std::pair<int, int>>& pairs) {
+// A face's wires as edge lists, or nothing when an edge is degenerate (a pole).
+std::optional<std::vector<std::vector<int>>> wire_edges(const ShapeIndex& index, int face) {
   const TopoDS_Face& f = index.face(face);
-  int wires = 0;
-  for (TopExp_Explorer w(f, TopAbs_WIRE); w.More(); w.Next()) ++wires;
-  if (wires != 1) return;
-  std::vector<int> edges;
-  for (BRepTools_WireExplorer it(BRepTools::OuterWire(f), f); it.More(); it.Next()) {
-    if (BRep_Tool::Degenerated(it.Current())) return;  // a pole
-    edges.push_back(index.edge_index(it.Current()));
+  std::vector<std::vector<int>> wires;
+  const TopoDS_Wire outer = BRepTools::OuterWire(f);
+  for (TopExp_Explorer w(f, TopAbs_WIRE); w.More(); w.Next()) {
+    const TopoDS_Wire wire = TopoDS::Wire(w.Current());
+    std::vector<int> edges;
+    for (BRepTools_WireExplorer it(wire, f); it.More(); it.Next()) {
+      if (BRep_Tool::Degenerated(it.Current())) return std::nullopt;
+      edges.push_back(index.edge_index(it.Current()));
+    }
+    if (wire.IsSame(outer)) wires.insert(wires.begin(), std::move(edges));
+    else wires.push_back(std::move(edges));
   }
-  if (edges.size() != 4) return;
-  for (int k = 0; k < 2; ++k) if (edges[k] != edges[k + 2]) pairs.push_back({edges[k], edges[k + 2]});
+  return wires;
+}
+
+// Edges whose counts a mapped mesh of the face wants equal: the opposite edges of a
+// face bounded by four edges, and the outer and inner edge of a ring (a face of two
+// wires of one edge each: an annulus meshed as a mapped ring, T0 between its cuts).
+void opposite_edge_pairs(const ShapeIndex& index, int face, std::vector<std::pair<int, int>>& pairs) {
+  const auto wires = wire_edges(index, face);
+  if (!wires) return;
+  if (wires->size() == 1 && (*wires)[0].size() == 4) {
+    const std::vector<int>& edges = (*wires)[0];
+    for (int k = 0; k < 2; ++k) if (edges[k] != edges[k + 2]) pairs.push_back({edges[k], edges[k + 2]});
+  } else if (wires->size() == 2 && (*wires)[0].size() == 1 && (*wires)[1].size() == 1) {
+    pairs.push_back({(*wires)[0][0], (*wires)[1][0]});
+  }
 }
 
 }  // namespace
+
+void raise_three_edge_face_floors(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& floor) {
+  for (int f = 0; f < index.face_count(); ++f) {
+    if (!meshed[f]) continue;
+    const auto wires = wire_edges(index, f);
+    if (!wires || wires->size() != 1 || (*wires)[0].size() != 3) continue;
+    for (int e : (*wires)[0]) floor[e] = std::max(floor[e], kThreeCurveSideMinimum);
+  }
+}
 
 IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector<char>& meshed,
                                       const std::vector<double>& lengths, double size, std::vector<int>& segments,

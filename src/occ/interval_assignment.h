@@ -41,8 +41,13 @@ std::vector<IntervalChange> make_faces_even(const ShapeIndex& index, const std::
 // Sum of the edge counts along a face's wires (seams twice, degenerate edges 0).
 int face_boundary_total(const ShapeIndex& index, int face, const std::vector<int>& segments);
 
+// Raises `floor` (per edge) to kThreeCurveSideMinimum on every edge of a meshed face
+// bounded by three edges (one wire, no pole), so such a face is three quads or more.
+void raise_three_edge_face_floors(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& floor);
+
 // The whole shape's edge counts chosen together: opposite edges of every face bounded
-// by four edges are joined into chains (as in mapped meshing), each chain gets the
+// by four edges, and the outer and inner circle of a ring face (two wires of one edge
+// each), are joined into chains (as in mapped meshing), each chain gets the
 // one count that best fits all its edges' length / size (at least every floor), so
 // those faces are mapped grids (T0, the best elements) and even by construction;
 // bands one segment wide get equal long sides (band_balance.h); the other faces are

@@ -168,8 +168,9 @@ class ShapeMeshContext {
   void index_faces() {
     meshed_ = meshed_faces(index_, options_.faces);
     result_.size = options_.size > 0 ? options_.size : default_size(shape_);
-    curvature_minimum_ = edge_turn_minimums(index_);
-    sized_ = edge_segment_counts(index_, result_.size, curvature_minimum_, lengths_);
+    edge_floor_ = edge_turn_minimums(index_);
+    raise_three_edge_face_floors(index_, meshed_, edge_floor_);
+    sized_ = edge_segment_counts(index_, result_.size, edge_floor_, lengths_);
     needed_.assign(index_.edge_count(), 0);
     for (int f = 0; f < index_.face_count(); ++f) {
       if (!meshed_[f]) continue;
@@ -183,8 +184,8 @@ class ShapeMeshContext {
   void assign_intervals() {
     segments_ = sized_;
     for (int e = 0; e < index_.edge_count(); ++e) segments_[e] = needed_[e] ? std::max(segments_[e], minimum_[e]) : 0;
-    // No change goes below the curvature bound or a refinement.
-    std::vector<int> floor = curvature_minimum_;
+    // No change goes below the curvature and three-edge-face bounds or a refinement.
+    std::vector<int> floor = edge_floor_;
     for (int e = 0; e < index_.edge_count(); ++e) floor[e] = std::max(floor[e], minimum_[e]);
     const IntervalReport intervals = assign_shape_intervals(index_, meshed_, lengths_, result_.size, segments_, floor);
     result_.changes = intervals.changes;
@@ -273,7 +274,7 @@ class ShapeMeshContext {
   ShapeMeshResult result_;
   std::vector<char> meshed_, needed_;
   std::vector<double> lengths_;
-  std::vector<int> sized_, minimum_, segments_, curvature_minimum_;
+  std::vector<int> sized_, minimum_, segments_, edge_floor_;
   std::vector<EdgeNodes> edges_;
   std::vector<FaceOutcome> outcomes_;
 };

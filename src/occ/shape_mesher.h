@@ -50,6 +50,8 @@ struct ShapeMeshOptions {
   // Per face, the shape vertices to use as corners (2 to 4).
   std::map<int, std::vector<int>> corners;
   MeshOptions templates;
+  // Smooth each face's mesh on its surface (surface_smoothing.h).
+  bool smooth = true;
   // Worker threads for the faces; <= 0: all cores.
   int threads = 0;
   // Mesh the other faces when one is refused (and list it); otherwise refuse all.

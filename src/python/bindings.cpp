@@ -119,8 +119,9 @@ bool looks_like_brep_text(const std::string& s) {
 py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, const std::vector<int>& faces,
                             const std::map<int, std::vector<int>>& corners, bool keep_going,
                             bool allow_inverted, int threads, int t4_ratio, int t5_cut_edges,
-                            long long max_quads, const py::object& progress) {
+                            long long max_quads, bool smooth, const py::object& progress) {
   ShapeMeshOptions options;
+  options.smooth = smooth;
   // The Python progress callable runs with the GIL, one call at a time; returning
   // True, or raising, cancels. Its exception is re-raised once meshing has stopped.
   std::atomic<bool> cancel{false};
@@ -193,5 +194,6 @@ PYBIND11_MODULE(_core, m) {
         py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"));
   m.def("mesh_shape", &tquad::mesh_shape_binding, py::arg("brep_text_or_path"), py::arg("size"),
         py::arg("faces"), py::arg("corners"), py::arg("keep_going"), py::arg("allow_inverted"),
-        py::arg("threads"), py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("progress"));
+        py::arg("threads"), py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("smooth"),
+        py::arg("progress"));
 }

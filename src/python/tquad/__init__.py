@@ -100,7 +100,7 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
                corners: Optional[Mapping[int, Sequence[int]]] = None,
                keep_going: bool = False, allow_inverted: bool = False, threads: int = 0,
                t4_ratio: int = 2, t5_cut_edges: int = 0,
-               max_quads: int = _MAX_QUADS,
+               max_quads: int = _MAX_QUADS, smooth: bool = True,
                progress: Optional[Callable[[str, int, int], Optional[bool]]] = None) -> Mesh:
     """Mesh the faces of a CAD shape, conforming across shared edges.
 
@@ -116,6 +116,8 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
         allow_inverted: keep a face whose quads stay inverted after repair.
         threads: threads meshing faces; 0 uses all cores (same output either way).
         t4_ratio, t5_cut_edges, max_quads: as for mesh_boundary.
+        smooth: smooth each face's mesh on its surface (interior nodes move where
+            that raises the worst corner around them, never lowering it).
         progress: called as ``progress(stage, done, total)`` at each stage
             ("index", "assign intervals", "discretize edges", "mesh faces",
             "assemble") and after each face; returning True (or raising) cancels.
@@ -129,4 +131,5 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
     corner_map: Dict[int, List[int]] = {int(k): [int(v) for v in vs] for k, vs in (corners or {}).items()}
     return Mesh(_core.mesh_shape(str(brep_text_or_path), float(size), face_list, corner_map,
                                  bool(keep_going), bool(allow_inverted), int(threads),
-                                 int(t4_ratio), int(t5_cut_edges), int(max_quads), progress))
+                                 int(t4_ratio), int(t5_cut_edges), int(max_quads), bool(smooth),
+                                 progress))

@@ -1,0 +1,155 @@
+#include "core/smoothing.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "core/node_adjacency.h"
+#include "core/quality.h"
+
+namespace tquad {
+
+namespace {
+
+constexpr int kStepsPerSize = 4;
+
+// The corners whose angle a node decides, summarized: the worst, their sum, and
+// whether a quad around it is collapsed.
+struct LocalQuality {
+  double worst = 1.0, sum = 0.0;
+  int collapsed = 0;
+
+  // Whether this (after a move) is better than `before`.
+  bool improves_on(const LocalQuality& before) const {
+    if (collapsed > before.collapsed) return false;
+    if (worst > before.worst + 1e-12) return true;
+    return worst >= before.worst && sum > before.sum + 1e-12;
+  }
+};
+
+class Smoother {
+ public:
+  Smoother(const std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param, std::vector<Vec3>& position,
+           std::vector<Vec3>& normal, const PlaceNode& place)
+      : quads_(quads), fixed_(fixed), param_(param), position_(position), normal_(normal), place_(place),
+        adjacency_(param.size(), quads) {}
+
+  SmoothingResult run(const SmoothingOptions& options) {
+    SmoothingResult result;
+    for (int pass = 0; pass < options.passes; ++pass) {
+      long long moves = 0;
+      for (int n = fixed_; n < static_cast<int>(param_.size()); ++n) {
+        if (norm(normal_[n]) == 0) continue;  // on a pole: it stays there
+        moves += move_to_neighbours_mean(n) ? 1 : 0;
+        if (local_quality(n).worst < options.search_below) moves += compass_search(n) ? 1 : 0;
+      }
+      result.moves += moves;
+      ++result.passes;
+      if (moves == 0) break;
+    }
+    return result;
+  }
+
+ private:
+  double corner(const Quad& q, int i) const {
+    const std::array<Vec3, 4> p{position_[q[0]], position_[q[1]], position_[q[2]], position_[q[3]]};
+    Vec3 n = normal_[q[i]];
+    if (norm(n) == 0) n = cross(p[2] - p[0], p[3] - p[1]);
+    return corner_scaled_jacobian(p, i, n);
+  }
+
+  LocalQuality local_quality(int n) const {
+    LocalQuality local;
+    const CompressedLists& around = adjacency_.quads_of;
+    for (int k = around.offsets[n]; k < around.offsets[n + 1]; ++k) {
+      const Quad& q = quads_[around.items[k]];
+      const int i = static_cast<int>(std::find(q.begin(), q.end(), n) - q.begin());
+      for (int j : {i, (i + 1) % 4, (i + 3) % 4}) {
+        const double c = corner(q, j);
+        local.worst = std::min(local.worst, c);
+        local.sum += c;
+      }
+      const std::array<Vec3, 4> p{position_[q[0]], position_[q[1]], position_[q[2]], position_[q[3]]};
+      local.collapsed += is_collapsed(p) ? 1 : 0;
+    }
+    return local;
+  }
+
+  // Tries node n at `param`; keeps it if the corners around improve on `before`
+  // (which is then updated), else restores the node.
+  bool try_move(int n, const Vec3& param, LocalQuality& before) {
+    const Vec3 kept_param = param_[n], kept_position = position_[n], kept_normal = normal_[n];
+    Vec3 position, normal;
+    if (!place_(param, position, normal) || norm(normal) == 0) return false;
+    param_[n] = param;
+    position_[n] = position;
+    normal_[n] = normal;
+    const LocalQuality after = local_quality(n);
+    if (after.improves_on(before)) {
+      before = after;
+      return true;
+    }
+    param_[n] = kept_param;
+    position_[n] = kept_position;
+    normal_[n] = kept_normal;
+    return false;
+  }
+
+  bool move_to_neighbours_mean(int n) {
+    const CompressedLists& next = adjacency_.neighbours;
+    const int first = next.offsets[n], last = next.offsets[n + 1];
+    if (last == first) return false;
+    Vec3 mean;
+    for (int k = first; k < last; ++k) mean += param_[next.items[k]];
+    mean = (1.0 / (last - first)) * mean;
+    LocalQuality before = local_quality(n);
+    const Vec3 start = param_[n];
+    for (double t : {1.0, 0.5, 0.25}) {
+      if (try_move(n, start + t * (mean - start), before)) return true;
+    }
+    return false;
+  }
+
+  bool compass_search(int n) {
+    const CompressedLists& next = adjacency_.neighbours;
+    double shortest = INFINITY;
+    for (int k = next.offsets[n]; k < next.offsets[n + 1]; ++k) {
+      shortest = std::min(shortest, distance(param_[n], param_[next.items[k]]));
+    }
+    if (!(shortest > 0) || !std::isfinite(shortest)) return false;
+    LocalQuality best = local_quality(n);
+    bool moved = false;
+    for (double step = 0.25 * shortest; step > shortest / 64; step *= 0.5) {
+      // At most kStepsPerSize moves per step size: each move is one step long.
+      for (int moves = 0, improved = 1; improved && moves < kStepsPerSize; ++moves) {
+        improved = 0;
+        const Vec3 start = param_[n];
+        for (int d = 0; d < 8 && !improved; ++d) {
+          const double angle = d * M_PI / 4;
+          improved = try_move(n, start + step * Vec3{std::cos(angle), std::sin(angle), 0.0}, best);
+        }
+        moved = moved || improved != 0;
+      }
+    }
+    return moved;
+  }
+
+  const std::vector<Quad>& quads_;
+  int fixed_;
+  std::vector<Vec3>& param_;
+  std::vector<Vec3>& position_;
+  std::vector<Vec3>& normal_;
+  const PlaceNode& place_;
+  NodeAdjacency adjacency_;
+};
+
+}  // namespace
+
+SmoothingResult smooth_mesh(const std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param,
+                            std::vector<Vec3>& position, std::vector<Vec3>& normal, const PlaceNode& place,
+                            const SmoothingOptions& options) {
+  if (fixed >= static_cast<int>(param.size())) return {};
+  return Smoother(quads, fixed, param, position, normal, place).run(options);
+}
+
+}  // namespace tquad

@@ -1,0 +1,54 @@
+// smooth_mesh: better-shaped quads by moving interior nodes on their surface.
+//
+// The templates place nodes by transfinite maps (paper, eqs. 3 and 4) and the repair
+// (untangle.h) only removes inverted corners, so thin or skewed quads remain where a
+// patch's counts or corners suit the geometry poorly: collinear interior nodes of a
+// transition, skewed quads along a cut. This pass moves each interior node in the
+// mesh's own coordinates (a face's (u, v), or a plane), evaluates the surface there,
+// and keeps a move only if the worst corner whose angle it decides (the scaled
+// Jacobian against the surface normal at each corner's node) does not drop and no quad
+// around it collapses. So the mesh's worst element never gets worse, and a node moves
+// only where that helps its quads. Each pass visits nodes in index order
+// (deterministic: the same mesh for any thread count):
+//   - first the mean of its edge neighbours (Laplacian), whole, half or a quarter of
+//     the way; the move is kept if it raises the worst corner there, or keeps it and
+//     raises the sum of those corners;
+//   - then, where the worst corner there is under kSearchBelow, a compass search that
+//     raises it (eight directions, steps from a quarter of the shortest edge halving
+//     down to 1/64 of it).
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "core/quad_mesh.h"
+
+namespace tquad {
+
+// Places a node at mesh coordinates `param`: its position and the surface's outer
+// normal there (any length). Returns false where the surface is singular (a pole),
+// where the node may not go.
+using PlaceNode = std::function<bool(const Vec3& param, Vec3& position, Vec3& normal)>;
+
+struct SmoothingOptions {
+  int passes = 8;
+  // Corners under this get the compass search (the Laplacian alone barely moves a
+  // node whose neighbours are themselves badly placed).
+  double search_below = 0.6;
+};
+
+struct SmoothingResult {
+  long long moves = 0;  // accepted node moves over all passes
+  int passes = 0;       // passes run (they stop early when no node moves)
+};
+
+// Nodes [0, fixed) never move, nor do nodes whose normal is singular (a node put on
+// a pole stays on it). param, position and normal hold each node's mesh
+// coordinates, position and outer normal (zero where singular: the corners there are
+// signed by the quad's own normal, the cross product of its diagonals); the moved
+// nodes' entries are updated.
+SmoothingResult smooth_mesh(const std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param,
+                            std::vector<Vec3>& position, std::vector<Vec3>& normal, const PlaceNode& place,
+                            const SmoothingOptions& options = {});
+
+}  // namespace tquad

@@ -1,0 +1,22 @@
+// smooth_face_mesh: a face's chosen mesh smoothed on its surface (core/smoothing.h).
+//
+// Interior nodes move in the mesh's own coordinates ((u, v), or polar (x, y) around a
+// pole) and are evaluated on the surface; shared boundary nodes stay. The smoothed
+// mesh is measured again (check_on_surface) and kept unless it is worse by that
+// measure, so smoothing never costs a face its validity.
+#pragma once
+
+#include <vector>
+
+#include <TopoDS_Face.hxx>
+
+#include "occ/face_mesher.h"
+
+namespace tquad {
+
+// `nodes`: the shared nodes (the boundary's positions). A mesh from the 3D route
+// (used_projection) is left as it is: its (u, v) come from projections and may jump
+// across a seam.
+void smooth_face_mesh(const TopoDS_Face& face, const std::vector<Vec3>& nodes, FaceMeshResult& mesh);
+
+}  // namespace tquad
