@@ -15,8 +15,26 @@
 #include "core/input_error.h"
 #include "core/parity_pairing.h"
 #include "occ/band_balance.h"
+#include "occ/ring_balance.h"
 
 namespace tquad {
+
+std::optional<std::vector<std::vector<int>>> face_wire_edges(const ShapeIndex& index, int face) {
+  const TopoDS_Face& f = index.face(face);
+  std::vector<std::vector<int>> wires;
+  const TopoDS_Wire outer = BRepTools::OuterWire(f);
+  for (TopExp_Explorer w(f, TopAbs_WIRE); w.More(); w.Next()) {
+    const TopoDS_Wire wire = TopoDS::Wire(w.Current());
+    std::vector<int> edges;
+    for (BRepTools_WireExplorer it(wire, f); it.More(); it.Next()) {
+      if (BRep_Tool::Degenerated(it.Current())) return std::nullopt;
+      edges.push_back(index.edge_index(it.Current()));
+    }
+    if (wire.IsSame(outer)) wires.insert(wires.begin(), std::move(edges));
+    else wires.push_back(std::move(edges));
+  }
+  return wires;
+}
 
 int face_boundary_total(const ShapeIndex& index, int face, const std::vector<int>& segments) {
   int total = 0;
@@ -95,29 +113,11 @@ std::vector<IntervalChange> assign_even_intervals(const ShapeIndex& index, const
 
 namespace {
 
-// A face's wires as edge lists, or nothing when an edge is degenerate (a pole).
-std::optional<std::vector<std::vector<int>>> wire_edges(const ShapeIndex& index, int face) {
-  const TopoDS_Face& f = index.face(face);
-  std::vector<std::vector<int>> wires;
-  const TopoDS_Wire outer = BRepTools::OuterWire(f);
-  for (TopExp_Explorer w(f, TopAbs_WIRE); w.More(); w.Next()) {
-    const TopoDS_Wire wire = TopoDS::Wire(w.Current());
-    std::vector<int> edges;
-    for (BRepTools_WireExplorer it(wire, f); it.More(); it.Next()) {
-      if (BRep_Tool::Degenerated(it.Current())) return std::nullopt;
-      edges.push_back(index.edge_index(it.Current()));
-    }
-    if (wire.IsSame(outer)) wires.insert(wires.begin(), std::move(edges));
-    else wires.push_back(std::move(edges));
-  }
-  return wires;
-}
-
 // Edges whose counts a mapped mesh of the face wants equal: the opposite edges of a
 // face bounded by four edges, and the outer and inner edge of a ring (a face of two
 // wires of one edge each: an annulus meshed as a mapped ring, T0 between its cuts).
 void opposite_edge_pairs(const ShapeIndex& index, int face, std::vector<std::pair<int, int>>& pairs) {
-  const auto wires = wire_edges(index, face);
+  const auto wires = face_wire_edges(index, face);
   if (!wires) return;
   if (wires->size() == 1 && (*wires)[0].size() == 4) {
     const std::vector<int>& edges = (*wires)[0];
@@ -132,7 +132,7 @@ void opposite_edge_pairs(const ShapeIndex& index, int face, std::vector<std::pai
 void raise_three_edge_face_floors(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& floor) {
   for (int f = 0; f < index.face_count(); ++f) {
     if (!meshed[f]) continue;
-    const auto wires = wire_edges(index, f);
+    const auto wires = face_wire_edges(index, f);
     if (!wires || wires->size() != 1 || (*wires)[0].size() != 3) continue;
     for (int e : (*wires)[0]) floor[e] = std::max(floor[e], kThreeCurveSideMinimum);
   }
@@ -171,7 +171,11 @@ IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector
     const int n = best_common_count(goals, low);
     for (int e : chain) segments[e] = n;
   }
-  // Bands one segment wide need equal long sides (band_balance.h).
+  // Rings get equal loop totals (ring_balance.h); bands one segment wide need equal
+  // long sides (band_balance.h).
+  std::vector<double> goals(edges, 1.0);
+  for (int e = 0; e < edges; ++e) if (segments[e] > 0) goals[e] = goal(e);
+  report.balanced_rings = balance_rings(index, meshed, goals, floors, segments, chains);
   report.balanced_bands = balance_one_quad_bands(index, meshed, segments, chains);
   // Faces left odd are made even by changing whole chains (which keeps their faces
   // mapped) or single edges.

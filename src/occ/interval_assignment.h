@@ -8,6 +8,7 @@
 // other meshed face. A closed shell always has an even number of odd faces.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,10 @@ std::vector<IntervalChange> make_faces_even(const ShapeIndex& index, const std::
 // Sum of the edge counts along a face's wires (seams twice, degenerate edges 0).
 int face_boundary_total(const ShapeIndex& index, int face, const std::vector<int>& segments);
 
+// A face's wires as edge lists (the outer wire first), or nothing when an edge is
+// degenerate (a pole).
+std::optional<std::vector<std::vector<int>>> face_wire_edges(const ShapeIndex& index, int face);
+
 // Raises `floor` (per edge) to kThreeCurveSideMinimum on every edge of a meshed face
 // bounded by three edges (one wire, no pole), so such a face is three quads or more.
 void raise_three_edge_face_floors(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& floor);
@@ -57,6 +62,7 @@ struct IntervalReport {
   int chains = 0;                       // chains of two or more edges
   int chained_edges = 0;
   int balanced_bands = 0;               // faces one segment wide given equal long sides
+  int balanced_rings = 0;               // faces of two loops given equal totals (ring_balance.h)
 };
 
 IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector<char>& meshed,

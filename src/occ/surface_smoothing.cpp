@@ -2,6 +2,7 @@
 
 #include <BRepAdaptor_Surface.hxx>
 
+#include "core/doublets.h"
 #include "core/smoothing.h"
 #include "occ/occ_vec.h"
 
@@ -26,9 +27,13 @@ void smooth_face_mesh(const TopoDS_Face& face, const std::vector<Vec3>& nodes, F
     n = outer_normal(surface, reversed, uv);
     return norm(n) > 0;
   };
-  if (smooth_mesh(mesh.quads, static_cast<int>(fixed), param, position, normal, place).moves == 0) return;
+  std::vector<Quad> quads = mesh.quads;
+  const int merged = remove_doublets(quads, static_cast<int>(fixed), param, position, normal);
+  const long long moves = smooth_mesh(quads, static_cast<int>(fixed), param, position, normal, place).moves;
+  if (merged == 0 && moves == 0) return;
 
   FaceMeshResult smoothed = mesh;
+  smoothed.quads = std::move(quads);
   smoothed.interior.assign(position.begin() + fixed, position.end());
   check_on_surface(face, param, mesh.polar, position, smoothed);
   if (!better_face_mesh(mesh, smoothed)) mesh = std::move(smoothed);

@@ -1,4 +1,5 @@
-// smooth_face_mesh: a face's chosen mesh smoothed on its surface (core/smoothing.h).
+// smooth_face_mesh: a face's chosen mesh cleaned (doublets merged, core/doublets.h)
+// and smoothed on its surface (core/smoothing.h).
 //
 // Interior nodes move in the mesh's own coordinates ((u, v), or polar (x, y) around a
 // pole) and are evaluated on the surface; shared boundary nodes stay. The smoothed

@@ -1,0 +1,24 @@
+// remove_doublets: merge the two quads around an interior node that lies in only two.
+//
+// Such a node (a doublet) has both its edges shared by the same two quads, so each of
+// them has a straight or reflex angle there, which no node move can fix (one quad
+// gains what the other loses: scaled Jacobian 0 measured on a patch of
+// 918_pump_carter_sup_21_03_2006.stp). Removing the node and merging its quads
+// removes one node and one quad, so nodes = 1 + quads + boundary_edges / 2 - holes
+// still holds. A merge is kept only if the merged quad's worst corner is no worse
+// than the two quads' worst.
+#pragma once
+
+#include <vector>
+
+#include "core/quad_mesh.h"
+
+namespace tquad {
+
+// Nodes [0, fixed) stay. param, position and normal are per node as in smooth_mesh
+// (smoothing.h); removed nodes are dropped from them and the quads renumbered (kept
+// nodes keep their order). Returns the number of nodes removed.
+int remove_doublets(std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param, std::vector<Vec3>& position,
+                    std::vector<Vec3>& normal);
+
+}  // namespace tquad

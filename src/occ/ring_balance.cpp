@@ -1,0 +1,88 @@
+#include "occ/ring_balance.h"
+
+#include <cmath>
+#include <cstdlib>
+
+#include "core/count_fitting.h"
+#include "occ/interval_assignment.h"
+
+namespace tquad {
+
+namespace {
+
+// A gap closed in more steps than this is left to the templates.
+constexpr int kMaxSteps = 64;
+
+int total(const std::vector<int>& edges, const std::vector<int>& segments) {
+  int sum = 0;
+  for (int e : edges) sum += segments[e];
+  return sum;
+}
+
+}  // namespace
+
+int balance_rings(const ShapeIndex& index, const std::vector<char>& meshed, const std::vector<double>& goal,
+                  const std::vector<int>& floor, std::vector<int>& segments,
+                  const std::vector<std::vector<int>>& chains) {
+  // Units: the chains, then each edge not in one.
+  std::vector<std::vector<int>> units = chains;
+  std::vector<char> chained(index.edge_count(), 0);
+  for (const std::vector<int>& chain : chains) for (int e : chain) chained[e] = 1;
+  for (int e = 0; e < index.edge_count(); ++e) if (!chained[e] && segments[e] > 0) units.push_back({e});
+  std::vector<int> unit_of(index.edge_count(), -1);
+  for (std::size_t u = 0; u < units.size(); ++u) for (int e : units[u]) unit_of[e] = static_cast<int>(u);
+
+  int balanced = 0;
+  for (int f = 0; f < index.face_count(); ++f) {
+    if (!meshed[f]) continue;
+    const auto wires = face_wire_edges(index, f);
+    if (!wires || wires->size() != 2) continue;
+    const std::vector<int>& a = (*wires)[0];
+    const std::vector<int>& b = (*wires)[1];
+    double goal_a = 0, goal_b = 0;
+    for (int e : a) goal_a += goal[e];
+    for (int e : b) goal_b += goal[e];
+    if (!near_enough_to_chain(goal_a, goal_b)) continue;
+    int gap = total(a, segments) - total(b, segments);
+    if (gap == 0) continue;
+    for (int step = 0; step < kMaxSteps && gap != 0; ++step) {
+      // The unit and direction that shrink |gap| at the least cost.
+      int best_unit = -1, best_direction = 0;
+      double best_cost = INFINITY;
+      std::vector<int> candidates;
+      for (int e : a) candidates.push_back(unit_of[e]);
+      for (int e : b) candidates.push_back(unit_of[e]);
+      for (int u : candidates) {
+        if (u < 0) continue;
+        int in_a = 0, in_b = 0;
+        for (int e : units[u]) {
+          for (int x : a) in_a += x == e ? 1 : 0;
+          for (int x : b) in_b += x == e ? 1 : 0;
+        }
+        const int effect = in_a - in_b;  // gap change per +1 on the unit
+        if (effect == 0) continue;
+        const int direction = (gap > 0) == (effect > 0) ? -1 : 1;
+        if (std::abs(gap + direction * effect) >= std::abs(gap)) continue;
+        double cost = 0;
+        bool allowed = true;
+        for (int e : units[u]) {
+          const int n = segments[e] + direction;
+          allowed = allowed && n >= std::max(1, floor[e]);
+          cost += count_cost(n, goal[e]) - count_cost(segments[e], goal[e]);
+        }
+        if (allowed && cost < best_cost - 1e-12) {
+          best_cost = cost;
+          best_unit = u;
+          best_direction = direction;
+        }
+      }
+      if (best_unit < 0) break;
+      for (int e : units[best_unit]) segments[e] += best_direction;
+      gap = total(a, segments) - total(b, segments);
+    }
+    balanced += gap == 0 ? 1 : 0;
+  }
+  return balanced;
+}
+
+}  // namespace tquad

@@ -1,0 +1,25 @@
+// balance_rings: a face bounded by two loops (an annulus: a washer, a tube's end, a
+// shoulder) gets equal segment totals on both loops where their lengths are near
+// enough to chain (count_fitting.h). Then the one-hole O-grid's halves are mapped
+// grids; with unequal totals a thin ring, one or two quads across, has no room for
+// the templates' transitions and fills with quads at a straight angle (scaled
+// Jacobian 0 measured on the rings of linkrods.step).
+//
+// Totals change by whole units, the chains (which keeps their faces mapped) or free
+// edges: each step takes the unit that closes the gap at the least cost
+// (count_cost), never below an edge's floor.
+#pragma once
+
+#include <vector>
+
+#include "occ/shape_index.h"
+
+namespace tquad {
+
+// segments: per edge, changed in place; chains: edges kept equal; goal and floor: per
+// edge. Returns the number of rings balanced.
+int balance_rings(const ShapeIndex& index, const std::vector<char>& meshed, const std::vector<double>& goal,
+                  const std::vector<int>& floor, std::vector<int>& segments,
+                  const std::vector<std::vector<int>>& chains);
+
+}  // namespace tquad
