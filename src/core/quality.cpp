@@ -35,6 +35,39 @@ double scaled_jacobian(const std::array<Vec3, 4>& p, const Vec3& normal) {
   return worst;
 }
 
+QuadCorners quad_corners(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>& unit_normal) {
+  std::array<Vec3, 4> edge;  // edge[i] from corner i to corner i + 1
+  std::array<double, 4> length;
+  double shortest = INFINITY, longest = 0;
+  for (int i = 0; i < 4; ++i) {
+    edge[i] = p[(i + 1) % 4] - p[i];
+    length[i] = norm(edge[i]);
+    shortest = std::min(shortest, length[i]);
+    longest = std::max(longest, length[i]);
+  }
+  QuadCorners out;
+  out.collapsed = shortest < kCollapsedEdgeRatio * longest;
+  Vec3 own;  // the diagonals' normal, only where a node's normal is zero
+  for (int i = 0; i < 4; ++i) {
+    const Vec3& a = edge[i];
+    const Vec3 b = -1.0 * edge[(i + 3) % 4];
+    const double lengths = length[i] * length[(i + 3) % 4];
+    if (lengths == 0) {
+      out.jacobian[i] = -1.0;
+      continue;
+    }
+    Vec3 n = unit_normal[i];
+    double n_length = 1.0;
+    if (n.x == 0 && n.y == 0 && n.z == 0) {
+      if (norm(own) == 0) own = cross(p[2] - p[0], p[3] - p[1]);
+      n = own;
+      n_length = norm(own);
+    }
+    out.jacobian[i] = n_length > 0 ? dot(cross(a, b), n) / (lengths * n_length) : 0.0;
+  }
+  return out;
+}
+
 bool is_collapsed(const std::array<Vec3, 4>& p) {
   double shortest = INFINITY, longest = 0;
   for (int i = 0; i < 4; ++i) {

@@ -24,6 +24,16 @@ double scaled_jacobian(const std::array<Vec3, 4>& quad, const Vec3& normal);
 // corner has zero length, 0 when the normal is zero.
 double corner_scaled_jacobian(const std::array<Vec3, 4>& quad, int i, const Vec3& normal);
 
+// All four corners of a quad at once (each edge measured once), each signed by its
+// own node's normal: unit_normal[i] of unit length, or zero (then the quad's own
+// normal, the cross product of its diagonals, stands in). The same values as
+// corner_scaled_jacobian, and whether the quad is_collapsed.
+struct QuadCorners {
+  std::array<double, 4> jacobian;
+  bool collapsed = false;
+};
+QuadCorners quad_corners(const std::array<Vec3, 4>& quad, const std::array<Vec3, 4>& unit_normal);
+
 struct QualityStats {
   double min = 0, avg = 0, max = 0, std = 0;
 };

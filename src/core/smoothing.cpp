@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "core/doublets.h"
 #include "core/node_adjacency.h"
 #include "core/quality.h"
 
@@ -12,6 +13,10 @@ namespace tquad {
 namespace {
 
 constexpr int kStepsPerSize = 4;
+
+// A move that keeps the worst corner must raise the sum of the corners around the
+// node (up to 12) by this much: smaller gains cost passes and change nothing one sees.
+constexpr double kSumGain = 1e-3;
 
 // The corners whose angle a node decides, summarized: the worst, their sum, and
 // whether a quad around it is collapsed.
@@ -23,54 +28,72 @@ struct LocalQuality {
   bool improves_on(const LocalQuality& before) const {
     if (collapsed > before.collapsed) return false;
     if (worst > before.worst + 1e-12) return true;
-    return worst >= before.worst && sum > before.sum + 1e-12;
+    return worst >= before.worst && sum > before.sum + kSumGain;
   }
 };
+
+Vec3 unit(const Vec3& v) {
+  const double length = norm(v);
+  return length > 0 ? (1.0 / length) * v : Vec3{};
+}
 
 class Smoother {
  public:
   Smoother(const std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param, std::vector<Vec3>& position,
            std::vector<Vec3>& normal, const PlaceNode& place)
       : quads_(quads), fixed_(fixed), param_(param), position_(position), normal_(normal), place_(place),
-        adjacency_(param.size(), quads) {}
+        adjacency_(param.size(), quads) {
+    unit_normal_.reserve(normal.size());
+    for (const Vec3& v : normal) unit_normal_.push_back(unit(v));
+  }
 
   SmoothingResult run(const SmoothingOptions& options) {
     SmoothingResult result;
+    // First the nodes with a corner around them under good_enough, then only nodes
+    // with a neighbour that moved (or that moved themselves): most of a mesh (its
+    // mapped grids) is left as the templates placed it.
+    const int count = static_cast<int>(param_.size());
+    std::vector<char> active(count, 0), next(count, 0);
+    for (int n = fixed_; n < count; ++n) active[n] = local_quality(n).worst < options.good_enough ? 1 : 0;
     for (int pass = 0; pass < options.passes; ++pass) {
       long long moves = 0;
-      for (int n = fixed_; n < static_cast<int>(param_.size()); ++n) {
-        if (norm(normal_[n]) == 0) continue;  // on a pole: it stays there
-        moves += move_to_neighbours_mean(n) ? 1 : 0;
-        if (local_quality(n).worst < options.search_below) moves += compass_search(n) ? 1 : 0;
+      for (int n = fixed_; n < count; ++n) {
+        if (!active[n] || norm(normal_[n]) == 0) continue;  // a node on a pole stays there
+        // The compass search (costlier) only where the Laplacian did not help.
+        const bool moved = move_to_neighbours_mean(n) ||
+                           (local_quality(n).worst < options.search_below && compass_search(n));
+        if (!moved) continue;
+        ++moves;
+        next[n] = 1;
+        const CompressedLists& around = adjacency_.neighbours;
+        for (int k = around.offsets[n]; k < around.offsets[n + 1]; ++k) {
+          active[around.items[k]] = 1;  // later in this pass
+          next[around.items[k]] = 1;
+        }
       }
       result.moves += moves;
       ++result.passes;
       if (moves == 0) break;
+      active.swap(next);
+      std::fill(next.begin(), next.end(), 0);
     }
     return result;
   }
 
  private:
-  double corner(const Quad& q, int i) const {
-    const std::array<Vec3, 4> p{position_[q[0]], position_[q[1]], position_[q[2]], position_[q[3]]};
-    Vec3 n = normal_[q[i]];
-    if (norm(n) == 0) n = cross(p[2] - p[0], p[3] - p[1]);
-    return corner_scaled_jacobian(p, i, n);
-  }
-
   LocalQuality local_quality(int n) const {
     LocalQuality local;
     const CompressedLists& around = adjacency_.quads_of;
     for (int k = around.offsets[n]; k < around.offsets[n + 1]; ++k) {
       const Quad& q = quads_[around.items[k]];
       const int i = static_cast<int>(std::find(q.begin(), q.end(), n) - q.begin());
+      const QuadCorners c = quad_corners({position_[q[0]], position_[q[1]], position_[q[2]], position_[q[3]]},
+                                         {unit_normal_[q[0]], unit_normal_[q[1]], unit_normal_[q[2]], unit_normal_[q[3]]});
       for (int j : {i, (i + 1) % 4, (i + 3) % 4}) {
-        const double c = corner(q, j);
-        local.worst = std::min(local.worst, c);
-        local.sum += c;
+        local.worst = std::min(local.worst, c.jacobian[j]);
+        local.sum += c.jacobian[j];
       }
-      const std::array<Vec3, 4> p{position_[q[0]], position_[q[1]], position_[q[2]], position_[q[3]]};
-      local.collapsed += is_collapsed(p) ? 1 : 0;
+      local.collapsed += c.collapsed ? 1 : 0;
     }
     return local;
   }
@@ -78,12 +101,14 @@ class Smoother {
   // Tries node n at `param`; keeps it if the corners around improve on `before`
   // (which is then updated), else restores the node.
   bool try_move(int n, const Vec3& param, LocalQuality& before) {
-    const Vec3 kept_param = param_[n], kept_position = position_[n], kept_normal = normal_[n];
+    const Vec3 kept_param = param_[n], kept_position = position_[n], kept_normal = normal_[n],
+               kept_unit = unit_normal_[n];
     Vec3 position, normal;
     if (!place_(param, position, normal) || norm(normal) == 0) return false;
     param_[n] = param;
     position_[n] = position;
     normal_[n] = normal;
+    unit_normal_[n] = unit(normal);
     const LocalQuality after = local_quality(n);
     if (after.improves_on(before)) {
       before = after;
@@ -92,6 +117,7 @@ class Smoother {
     param_[n] = kept_param;
     position_[n] = kept_position;
     normal_[n] = kept_normal;
+    unit_normal_[n] = kept_unit;
     return false;
   }
 
@@ -141,6 +167,7 @@ class Smoother {
   std::vector<Vec3>& normal_;
   const PlaceNode& place_;
   NodeAdjacency adjacency_;
+  std::vector<Vec3> unit_normal_;  // normal_ of unit length, zero where singular
 };
 
 }  // namespace
@@ -150,6 +177,18 @@ SmoothingResult smooth_mesh(const std::vector<Quad>& quads, int fixed, std::vect
                             const SmoothingOptions& options) {
   if (fixed >= static_cast<int>(param.size())) return {};
   return Smoother(quads, fixed, param, position, normal, place).run(options);
+}
+
+SmoothingResult smooth_planar_mesh(QuadMesh& mesh, int fixed, int& merged, const SmoothingOptions& options) {
+  const Vec3 up{0, 0, 1};
+  std::vector<Vec3> param = mesh.nodes, normal(mesh.nodes.size(), up);
+  merged = remove_doublets(mesh.quads, fixed, param, mesh.nodes, normal);
+  const PlaceNode in_plane = [&](const Vec3& p, Vec3& position, Vec3& n) {
+    position = p;
+    n = up;
+    return true;
+  };
+  return smooth_mesh(mesh.quads, fixed, param, mesh.nodes, normal, in_plane, options);
 }
 
 }  // namespace tquad

@@ -35,6 +35,8 @@ struct SmoothingOptions {
   // Corners under this get the compass search (the Laplacian alone barely moves a
   // node whose neighbours are themselves badly placed).
   double search_below = 0.6;
+  // Nodes whose corners around all reach this are left alone unless a neighbour moves.
+  double good_enough = 0.8;
 };
 
 struct SmoothingResult {
@@ -50,5 +52,10 @@ struct SmoothingResult {
 SmoothingResult smooth_mesh(const std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param,
                             std::vector<Vec3>& position, std::vector<Vec3>& normal, const PlaceNode& place,
                             const SmoothingOptions& options = {});
+
+// A planar mesh (normal +z) cleaned and smoothed in place: doublets merged
+// (doublets.h), then smooth_mesh with nodes [0, fixed) kept. Returns the smoothing's
+// result; `merged` receives the doublets removed.
+SmoothingResult smooth_planar_mesh(QuadMesh& mesh, int fixed, int& merged, const SmoothingOptions& options = {});
 
 }  // namespace tquad
