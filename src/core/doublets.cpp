@@ -29,7 +29,8 @@ double worst_corner(const Quad& q, const std::vector<Vec3>& position, const std:
 
 // One sweep over the nodes: merges where it may; marks removed quads and nodes.
 int merge_doublets(std::vector<Quad>& quads, int fixed, const std::vector<Vec3>& position,
-                   const std::vector<Vec3>& normal, std::vector<char>& quad_gone, std::vector<char>& node_gone) {
+                   const std::vector<Vec3>& normal, bool even_if_worse, std::vector<char>& quad_gone,
+                   std::vector<char>& node_gone) {
   const NodeAdjacency adjacency(position.size(), quads);
   const CompressedLists& around = adjacency.quads_of;
   // Nodes of quads changed in this sweep: their lists above are stale until the next.
@@ -45,8 +46,8 @@ int merge_doublets(std::vector<Quad>& quads, int fixed, const std::vector<Vec3>&
     const Quad a = starting_at(quads[live[0]], n), b = starting_at(quads[live[1]], n);
     if (b[1] != a[3] || b[3] != a[1]) continue;  // not one fan of two quads around n
     const Quad joined{a[1], a[2], a[3], b[2]};
-    if (worst_corner(joined, position, normal) <
-        std::min(worst_corner(a, position, normal), worst_corner(b, position, normal))) {
+    if (!even_if_worse && worst_corner(joined, position, normal) <
+                              std::min(worst_corner(a, position, normal), worst_corner(b, position, normal))) {
       continue;
     }
     quads[live[0]] = joined;
@@ -62,12 +63,12 @@ int merge_doublets(std::vector<Quad>& quads, int fixed, const std::vector<Vec3>&
 }  // namespace
 
 int remove_doublets(std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param, std::vector<Vec3>& position,
-                    std::vector<Vec3>& normal) {
+                    std::vector<Vec3>& normal, bool even_if_worse) {
   std::vector<char> quad_gone(quads.size(), 0), node_gone(position.size(), 0);
   int removed = 0;
   // A merge can leave a neighbour in two quads; a few sweeps reach them.
   for (int sweep = 0; sweep < 4; ++sweep) {
-    const int merged = merge_doublets(quads, fixed, position, normal, quad_gone, node_gone);
+    const int merged = merge_doublets(quads, fixed, position, normal, even_if_worse, quad_gone, node_gone);
     removed += merged;
     if (merged == 0) break;
   }

@@ -6,7 +6,8 @@
 // 918_pump_carter_sup_21_03_2006.stp). Removing the node and merging its quads
 // removes one node and one quad, so nodes = 1 + quads + boundary_edges / 2 - holes
 // still holds. A merge is kept only if the merged quad's worst corner is no worse
-// than the two quads' worst.
+// than the two quads' worst, unless `even_if_worse`: then a merged quad with a reflex
+// corner at an interior node is left for smoothing to open (the caller compares).
 #pragma once
 
 #include <vector>
@@ -19,6 +20,6 @@ namespace tquad {
 // (smoothing.h); removed nodes are dropped from them and the quads renumbered (kept
 // nodes keep their order). Returns the number of nodes removed.
 int remove_doublets(std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param, std::vector<Vec3>& position,
-                    std::vector<Vec3>& normal);
+                    std::vector<Vec3>& normal, bool even_if_worse = false);
 
 }  // namespace tquad

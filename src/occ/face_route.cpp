@@ -2,6 +2,7 @@
 
 #include <Standard_Failure.hxx>
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 
@@ -77,7 +78,10 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     }
   }
   if (!best) throw InputError(refusal);
-  if (options.smooth) smooth_face_mesh(index.face(f), nodes, *best);
+  if (options.smooth) {
+    const bool seam = std::find(boundary.is_seam.begin(), boundary.is_seam.end(), 1) != boundary.is_seam.end();
+    smooth_face_mesh(index.face(f), seam, nodes, *best);
+  }
   if (best->inverted > 0 && !options.allow_inverted) {
     char worst[32];
     std::snprintf(worst, sizeof worst, "%.3g", best->worst_corner);

@@ -16,8 +16,8 @@
 namespace tquad {
 
 // `nodes`: the shared nodes (the boundary's positions). A mesh from the 3D route
-// (used_projection) is left as it is: its (u, v) come from projections and may jump
-// across a seam.
-void smooth_face_mesh(const TopoDS_Face& face, const std::vector<Vec3>& nodes, FaceMeshResult& mesh);
+// (used_projection) on a face with a seam is left as it is: its (u, v) come from
+// projections and may jump across the seam.
+void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<Vec3>& nodes, FaceMeshResult& mesh);
 
 }  // namespace tquad
