@@ -15,6 +15,7 @@
 
 #include "core/cut_intervals.h"
 #include "core/decomposed_mesher.h"
+#include "core/disk_o_grid.h"
 #include "core/input_error.h"
 #include "core/mesh_validation.h"
 #include "core/o_grid.h"
@@ -102,6 +103,28 @@ TEST(FaceDecomposition, OGridOfARingIsTwoMappedHalves) {
   PlanarDomain plain;
   plain.loops.push_back(d.loops[0]);
   EXPECT_FALSE(o_grid_decomposition(plain, 0).has_value());
+}
+
+TEST(DiskOGrid, ACircleIsASquareAndFourMappedPatchesAtEverySize) {
+  // Corners on a smooth circle (two curves, T5) give a worst corner near
+  // sin(360 / n degrees), halving with each refinement; the O-grid's stays put.
+  for (int n : {8, 16, 32, 64, 128}) {
+    PlanarDomain d;
+    DomainLoop circle = circle_hole({0, 0}, 1.0, n);
+    std::reverse(circle.points.begin(), circle.points.end());  // counter-clockwise
+    d.loops.push_back(circle);
+    const std::optional<QuadMesh> mesh = mesh_disk_o_grid(d);
+    ASSERT_TRUE(mesh.has_value()) << n;
+    expect_valid(d, *mesh, "circle of " + std::to_string(n));
+    EXPECT_EQ(mesh->template_tree, "O5[T0,T0,T0,T0,T0]") << n;
+    EXPECT_GT(summarize_quality(*mesh, kUp).scaled_jacobian.min, 0.5) << n;
+  }
+  // Not a disk: a hole, or a sharp corner.
+  PlanarDomain ring;
+  ring.loops.push_back(polygon_loop({{-2, -2}, {2, -2}, {2, 2}, {-2, 2}}, 4));
+  EXPECT_FALSE(mesh_disk_o_grid(ring).has_value());
+  ring.loops.push_back(circle_hole({0, 0}, 1.0, 8));
+  EXPECT_FALSE(mesh_disk_o_grid(ring).has_value());
 }
 
 TEST(FaceDecomposition, EveryPatchTotalIsEvenAfterIntervalAssignment) {

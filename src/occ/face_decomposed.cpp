@@ -9,6 +9,7 @@
 
 #include "core/cut_intervals.h"
 #include "core/decomposed_mesher.h"
+#include "core/disk_o_grid.h"
 #include "core/face_decomposition.h"
 #include "core/hole_rings.h"
 #include "core/input_error.h"
@@ -80,9 +81,15 @@ class FaceChart {
   FaceMeshResult mesh(const FaceDecomposition& decomposition, double edge_size, const MeshOptions& options) const {
     const auto start = std::chrono::steady_clock::now();
     const PlanarDomain& inner = ringed_.inner;
-    const QuadMesh mesh = join_rings(
-        domain_, ringed_,
-        mesh_decomposed_domain(inner, decomposition, assign_cut_intervals(inner, decomposition, edge_size), options));
+    return place(join_rings(domain_, ringed_,
+                            mesh_decomposed_domain(inner, decomposition,
+                                                   assign_cut_intervals(inner, decomposition, edge_size), options)),
+                 start);
+  }
+
+  // A mesh of the whole domain in the chart (its points first), placed on the surface
+  // and checked; `start`: when building it began.
+  FaceMeshResult place(const QuadMesh& mesh, std::chrono::steady_clock::time_point start) const {
     FaceMeshResult out;
     out.boundary_nodes = boundary_nodes_;
     out.quads = mesh.quads;
@@ -106,6 +113,9 @@ class FaceChart {
     check_on_surface(face_, uv, std::nullopt, xyz, out);
     return out;
   }
+
+  // The whole domain, before its rings (a disk has none).
+  const PlanarDomain& whole_domain() const { return domain_; }
 
  private:
   // Holes run clockwise in the chart, the outer loop counter-clockwise.
@@ -149,6 +159,16 @@ FaceMeshResult mesh_face_decomposed(const TopoDS_Face& face, int face_index, con
   } catch (const InputError& e) {
     throw InputError(chart.name() + " (decomposed into patches): " + e.what());
   }
+}
+
+std::optional<FaceMeshResult> mesh_face_disk(const TopoDS_Face& face, int face_index, const FaceBoundary& b,
+                                             const std::vector<Vec3>& nodes, int vertex_nodes,
+                                             const MeshOptions& options) {
+  const FaceChart chart(face, face_index, b, nodes, vertex_nodes);
+  const auto start = std::chrono::steady_clock::now();
+  const std::optional<QuadMesh> disk = mesh_disk_o_grid(chart.whole_domain(), options);
+  if (!disk) return std::nullopt;
+  return chart.place(*disk, start);
 }
 
 FaceMeshResult mesh_face_o_grid(const TopoDS_Face& face, int face_index, const FaceBoundary& b,

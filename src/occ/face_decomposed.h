@@ -11,6 +11,8 @@
 
 #include <TopoDS_Face.hxx>
 
+#include <optional>
+
 #include "core/mesher.h"
 #include "occ/face_boundary.h"
 #include "occ/face_mesher.h"
@@ -31,5 +33,12 @@ FaceMeshResult mesh_face_decomposed(const TopoDS_Face& face, int face_index, con
 FaceMeshResult mesh_face_o_grid(const TopoDS_Face& face, int face_index, const FaceBoundary& boundary,
                                 const std::vector<Vec3>& nodes, int vertex_nodes, double edge_size,
                                 const MeshOptions& options);
+
+// A disk (one smooth loop, no hole): a square and four mapped patches around it
+// (disk_o_grid.h), or nothing when the face is not such a disk. Throws InputError
+// (naming the face) for a face with a pole or a broken chart.
+std::optional<FaceMeshResult> mesh_face_disk(const TopoDS_Face& face, int face_index, const FaceBoundary& boundary,
+                                             const std::vector<Vec3>& nodes, int vertex_nodes,
+                                             const MeshOptions& options);
 
 }  // namespace tquad

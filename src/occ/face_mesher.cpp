@@ -10,6 +10,7 @@
 #include <chrono>
 #include <optional>
 
+#include "core/disk_o_grid.h"
 #include "core/input_error.h"
 #include "core/planar_self_intersection.h"
 #include "core/quality.h"
@@ -62,11 +63,10 @@ void put_a_node_on_the_pole(QuadMesh& mesh, int boundary_points) {
   if (after.inverted > before || after.collapsed > 0) mesh.nodes[nearest] = kept;
 }
 
-FaceMeshResult mesh_in_parameter_space(const TopoDS_Face& face, const FaceBoundary& b,
-                                       const std::vector<int>& corners, const std::vector<Vec3>& nodes,
-                                       const MeshOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  QuadMesh uv_mesh = mesh_boundary(BoundaryLoop{b.uv, corners}, options);
+// A mesh built in the face's parameter space (the loop's points first), placed on the
+// surface and checked; `start`: when building it began.
+FaceMeshResult place_parameter_mesh(const TopoDS_Face& face, const FaceBoundary& b, const std::vector<Vec3>& nodes,
+                                    QuadMesh uv_mesh, std::chrono::steady_clock::time_point start) {
   if (b.polar) put_a_node_on_the_pole(uv_mesh, static_cast<int>(b.nodes.size()));
   FaceMeshResult out;
   out.boundary_nodes = b.nodes;
@@ -84,6 +84,13 @@ FaceMeshResult mesh_in_parameter_space(const TopoDS_Face& face, const FaceBounda
   out.placement_seconds = seconds_since(placing);
   check_on_surface(face, uv_mesh.nodes, b.polar, local_positions(b, nodes, out.interior), out);
   return out;
+}
+
+FaceMeshResult mesh_in_parameter_space(const TopoDS_Face& face, const FaceBoundary& b,
+                                       const std::vector<int>& corners, const std::vector<Vec3>& nodes,
+                                       const MeshOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  return place_parameter_mesh(face, b, nodes, mesh_boundary(BoundaryLoop{b.uv, corners}, options), start);
 }
 
 FaceMeshResult mesh_in_space(const TopoDS_Face& face, const FaceBoundary& b, const std::vector<int>& corners,
@@ -245,6 +252,26 @@ FaceMeshResult mesh_face(const ShapeIndex& index, int face_index, const FaceBoun
     }
   }
   return *best;
+}
+
+std::optional<FaceMeshResult> mesh_polar_disk(const TopoDS_Face& face, const FaceBoundary& boundary,
+                                              const std::vector<Vec3>& nodes, const MeshOptions& options) {
+  if (!boundary.polar) return std::nullopt;
+  const auto start = std::chrono::steady_clock::now();
+  // The disk's O-grid wants a counter-clockwise loop: a clockwise one is mirrored
+  // (x -> -x) for building, and its nodes and quads mirrored back.
+  const bool mirror = twice_signed_area(boundary.uv) < 0;
+  PlanarDomain disk;
+  disk.loops.push_back(DomainLoop{boundary.uv, {}});
+  if (mirror) for (Vec3& p : disk.loops[0].points) p.x = -p.x;
+  std::optional<QuadMesh> mesh = mesh_disk_o_grid(disk, options);
+  if (!mesh) return std::nullopt;
+  if (mirror) {
+    for (Vec3& p : mesh->nodes) p.x = -p.x;
+    for (Quad& q : mesh->quads) std::swap(q[1], q[3]);
+  }
+  for (std::size_t i = 0; i < boundary.uv.size(); ++i) mesh->nodes[i] = boundary.uv[i];  // bit-exact
+  return place_parameter_mesh(face, boundary, nodes, std::move(*mesh), start);
 }
 
 std::string corner_text(const FaceBoundary& b, const std::vector<int>& corners) {

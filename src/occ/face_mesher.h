@@ -82,6 +82,12 @@ FaceMeshResult mesh_face(const ShapeIndex& index, int face, const FaceBoundary& 
                          const std::vector<int>& corners, const std::vector<Vec3>& nodes,
                          const MeshOptions& options);
 
+// A disk around a pole (boundary.polar) meshed as a square and four mapped patches
+// in polar (x, y) (disk_o_grid.h), a node put on the pole; nothing when the face is not
+// polar or the O-grid does not fit.
+std::optional<FaceMeshResult> mesh_polar_disk(const TopoDS_Face& face, const FaceBoundary& boundary,
+                                              const std::vector<Vec3>& nodes, const MeshOptions& options);
+
 // "at vertices 3, 7, 8, 12" (or "node n" for a corner where no wire edge starts).
 std::string corner_text(const FaceBoundary& boundary, const std::vector<int>& corners);
 

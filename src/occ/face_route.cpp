@@ -33,7 +33,8 @@ constexpr std::size_t kRefinableQuads = 16;
 constexpr double kGoodEnoughCorner = 0.3;
 
 // The face's mesh, the one place where the algorithm per face is chosen:
-//   - no hole: the templates on each corner choice (face_corners.h);
+//   - no hole: the templates on each corner choice (face_corners.h), and for a disk
+//     (one smooth loop) the disk's O-grid (disk_o_grid.h);
 //   - one hole: the O-grid of two halves (o_grid.h, face_decomposed.h);
 //   - more holes, or when the above leave inverted quads or a worst corner under
 //     kGoodEnoughCorner: the face decomposition (face_decomposed.h), any outline;
@@ -69,6 +70,24 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
       }
     }
     decompose = decompose && !user_corners;  // the user's corners are an instruction
+    if (boundary.polar && !user_corners) {
+      try {
+        if (auto disk = mesh_polar_disk(index.face(f), boundary, nodes, options.templates)) keep(std::move(*disk));
+      } catch (const std::exception& e) {  // the corner routes stand
+        if (!best) refusal = e.what();
+      }
+    }
+    // A disk's O-grid (a square and four patches around it) beats corners on a smooth
+    // curve; offered when the face has no user corners and no pole.
+    if (decompose) {
+      try {
+        if (auto disk = mesh_face_disk(index.face(f), f, boundary, nodes, index.vertex_count(), options.templates)) {
+          keep(std::move(*disk));
+        }
+      } catch (const std::exception& e) {  // the other routes stand
+        if (!best) refusal = e.what();
+      }
+    }
   }
   if (decompose && (!best || best->inverted > 0 || best->collapsed > 0 || best->worst_corner < kGoodEnoughCorner)) {
     try {

@@ -1,0 +1,137 @@
+#include "core/disk_o_grid.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "core/input_error.h"
+#include "core/planar_predicates.h"
+#include "core/planar_self_intersection.h"
+
+namespace tquad {
+
+namespace {
+
+// Area centroid of a simple polygon (z ignored).
+Vec3 centroid(const std::vector<Vec3>& p) {
+  double twice = 0, cx = 0, cy = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec3& a = p[i];
+    const Vec3& b = p[(i + 1) % p.size()];
+    const double w = a.x * b.y - b.x * a.y;
+    twice += w;
+    cx += (a.x + b.x) * w;
+    cy += (a.y + b.y) * w;
+  }
+  return {cx / (3 * twice), cy / (3 * twice), 0.0};
+}
+
+// Nodes from a to b (both excluded), `segments` equal steps.
+std::vector<Vec3> between(const Vec3& a, const Vec3& b, int segments) {
+  std::vector<Vec3> out;
+  for (int k = 1; k < segments; ++k) out.push_back(a + (static_cast<double>(k) / segments) * (b - a));
+  return out;
+}
+
+}  // namespace
+
+std::optional<QuadMesh> mesh_disk_o_grid(const PlanarDomain& domain, const MeshOptions& options) {
+  if (domain.loop_count() != 1) return std::nullopt;
+  const DomainLoop& loop = domain.loops[0];
+  const std::vector<Vec3>& p = loop.points;
+  const int n = static_cast<int>(p.size());
+  if (n < 8 || n % 2 != 0) return std::nullopt;
+  if (std::find(loop.vertex.begin(), loop.vertex.end(), 1) != loop.vertex.end()) {
+    // A CAD vertex is allowed only where the loop runs straight on (a circle split
+    // in two edges): the corners of the patches would otherwise miss it.
+    for (int i = 0; i < n; ++i) {
+      if (!loop.vertex.empty() && loop.vertex[i] &&
+          std::abs(signed_angle(p[i] - p[(i + n - 1) % n], p[(i + 1) % n] - p[i])) > M_PI / 6) {
+        return std::nullopt;
+      }
+    }
+  }
+  const int a = n / 4, b = n / 2 - a;
+  const std::array<int, 4> corner{0, a, a + b, 2 * a + b};
+  const std::array<int, 4> arc{a, b, a, b};
+  const Vec3 c = centroid(p);
+  std::array<Vec3, 4> square;
+  for (int k = 0; k < 4; ++k) square[k] = c + kSquareScale * (p[corner[k]] - c);
+  // The square must be a convex counter-clockwise quad, and each connector must stay
+  // inside the loop (a non-convex outline could cut across).
+  for (int k = 0; k < 4; ++k) {
+    if (orient2d(square[k], square[(k + 1) % 4], square[(k + 2) % 4]) <= 0) return std::nullopt;
+  }
+  double perimeter = 0;
+  for (int i = 0; i < n; ++i) perimeter += distance(p[i], p[(i + 1) % n]);
+  const double spacing = perimeter / n;
+  std::vector<std::array<Vec3, 2>> connectors;
+  for (int k = 0; k < 4; ++k) connectors.push_back({square[k], p[corner[k]]});
+  for (int k = 0; k < 4; ++k) {
+    for (int i = 0; i < n; ++i) {
+      const int j = (i + 1) % n;
+      if (i == corner[k] || j == corner[k]) continue;
+      if (segments_meet(connectors[k][0], connectors[k][1], p[i], p[j])) return std::nullopt;
+    }
+  }
+
+  QuadMesh mesh;
+  mesh.nodes = p;
+  const auto add = [&](const Vec3& v) {
+    mesh.nodes.push_back(v);
+    return static_cast<NodeId>(mesh.nodes.size() - 1);
+  };
+  std::array<NodeId, 4> q;
+  for (int k = 0; k < 4; ++k) q[k] = add(square[k]);
+  // Connector k from the square's corner k out to the loop's corner point.
+  std::array<std::vector<NodeId>, 4> spoke;
+  int layers = 1;
+  for (int k = 0; k < 4; ++k) layers = std::max(layers, static_cast<int>(std::lround(distance(square[k], p[corner[k]]) / spacing)));
+  for (int k = 0; k < 4; ++k) {
+    spoke[k].push_back(q[k]);
+    for (const Vec3& v : between(square[k], p[corner[k]], layers)) spoke[k].push_back(add(v));
+    spoke[k].push_back(corner[k]);
+  }
+  // Square side k from q[k] to q[k+1], arc[k] segments.
+  std::array<std::vector<NodeId>, 4> side;
+  for (int k = 0; k < 4; ++k) {
+    side[k].push_back(q[k]);
+    for (const Vec3& v : between(square[k], square[(k + 1) % 4], arc[k])) side[k].push_back(add(v));
+    side[k].push_back(q[(k + 1) % 4]);
+  }
+
+  // Each patch as a loop of node ids with its corners, meshed by the templates.
+  const auto mesh_patch = [&](const std::vector<std::vector<NodeId>>& sides) {
+    std::vector<NodeId> ids;
+    BoundaryLoop region;
+    for (const std::vector<NodeId>& s : sides) {
+      region.corners.push_back(static_cast<int>(ids.size()));
+      ids.insert(ids.end(), s.begin(), s.end() - 1);
+    }
+    for (NodeId id : ids) region.points.push_back(mesh.nodes[id]);
+    const QuadMesh patch = mesh_boundary(region, options);
+    const NodeId base = static_cast<NodeId>(mesh.nodes.size());
+    const int m = static_cast<int>(ids.size());
+    mesh.nodes.insert(mesh.nodes.end(), patch.nodes.begin() + m, patch.nodes.end());
+    for (Quad quad : patch.quads) {
+      for (NodeId& v : quad) v = v < m ? ids[v] : base + (v - m);
+      mesh.quads.push_back(quad);
+    }
+    return patch.template_tree;
+  };
+  const auto reversed = [](std::vector<NodeId> v) {
+    std::reverse(v.begin(), v.end());
+    return v;
+  };
+  std::string trees = mesh_patch({side[0], side[1], side[2], side[3]});
+  for (int k = 0; k < 4; ++k) {
+    std::vector<NodeId> outer;
+    for (int i = 0; i <= arc[k]; ++i) outer.push_back(static_cast<NodeId>((corner[k] + i) % n));
+    trees += "," + mesh_patch({outer, reversed(spoke[(k + 1) % 4]), reversed(side[k]), spoke[k]});
+  }
+  mesh.template_tree = "O5[" + trees + "]";
+  return mesh;
+}
+
+}  // namespace tquad

@@ -1,0 +1,33 @@
+// mesh_disk_o_grid: a disk (one smooth loop, no hole) meshed as a square in the middle
+// and four mapped patches around it, the classic O-grid of a circle.
+//
+// Two curves with corners on a smooth circle (T5) put a quad with a corner near
+// 180 - 360/n degrees at each corner, so its scaled Jacobian halves each time the mesh
+// is refined (0.112, 0.057, 0.028 measured on the caps of cylinder.brep at D/25, D/50,
+// D/100). Here every boundary node has two quads, and the worst corners sit at the
+// square's corners (near 135 degrees on a circle), whatever the size.
+//
+// The loop's points are split into four arcs of a, b, a, b segments (a + b = n / 2,
+// from point 0); the square's corners lie on the segments from the centroid to the
+// arcs' ends, kSquareScale of the way out; the connectors get the count that best
+// fits their length at the loop's mean spacing. Every patch has equal opposite counts
+// (T0).
+#pragma once
+
+#include <optional>
+
+#include "core/mesher.h"
+#include "core/planar_domain.h"
+
+namespace tquad {
+
+// Where the square's corners lie, as a fraction of the way from the centroid to the
+// loop (0.5 to 0.6 is usual for an O-grid of a circle).
+constexpr double kSquareScale = 0.55;
+
+// The mesh (the loop's points first, bit-exact), or nothing when the domain is not
+// such a disk: a hole, fewer than 8 points, a sharp CAD vertex, or the square or a
+// connector not inside the loop.
+std::optional<QuadMesh> mesh_disk_o_grid(const PlanarDomain& domain, const MeshOptions& options = {});
+
+}  // namespace tquad
