@@ -10,6 +10,7 @@
 #include "core/cut_intervals.h"
 #include "core/decomposed_mesher.h"
 #include "core/disk_o_grid.h"
+#include "core/mapped_ring.h"
 #include "core/face_decomposition.h"
 #include "core/hole_rings.h"
 #include "core/input_error.h"
@@ -169,6 +170,15 @@ std::optional<FaceMeshResult> mesh_face_disk(const TopoDS_Face& face, int face_i
   const std::optional<QuadMesh> disk = mesh_disk_o_grid(chart.whole_domain(), options);
   if (!disk) return std::nullopt;
   return chart.place(*disk, start);
+}
+
+std::optional<FaceMeshResult> mesh_face_ring(const TopoDS_Face& face, int face_index, const FaceBoundary& b,
+                                             const std::vector<Vec3>& nodes, int vertex_nodes) {
+  const FaceChart chart(face, face_index, b, nodes, vertex_nodes);
+  const auto start = std::chrono::steady_clock::now();
+  const std::optional<QuadMesh> ring = mesh_mapped_ring(chart.whole_domain());
+  if (!ring) return std::nullopt;
+  return chart.place(*ring, start);
 }
 
 FaceMeshResult mesh_face_o_grid(const TopoDS_Face& face, int face_index, const FaceBoundary& b,

@@ -34,6 +34,11 @@ FaceMeshResult mesh_face_o_grid(const TopoDS_Face& face, int face_index, const F
                                 const std::vector<Vec3>& nodes, int vertex_nodes, double edge_size,
                                 const MeshOptions& options);
 
+// A ring (one hole) whose loops have equal counts: one structured grid around the
+// hole (mapped_ring.h), or nothing when the face is not such a ring.
+std::optional<FaceMeshResult> mesh_face_ring(const TopoDS_Face& face, int face_index, const FaceBoundary& boundary,
+                                             const std::vector<Vec3>& nodes, int vertex_nodes);
+
 // A disk (one smooth loop, no hole): a square and four mapped patches around it
 // (disk_o_grid.h), or nothing when the face is not such a disk. Throws InputError
 // (naming the face) for a face with a pole or a broken chart.

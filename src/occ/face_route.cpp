@@ -35,7 +35,8 @@ constexpr double kGoodEnoughCorner = 0.3;
 // The face's mesh, the one place where the algorithm per face is chosen:
 //   - no hole: the templates on each corner choice (face_corners.h), and for a disk
 //     (one smooth loop) the disk's O-grid (disk_o_grid.h);
-//   - one hole: the O-grid of two halves (o_grid.h, face_decomposed.h);
+//   - one hole: a structured ring when both loops have the same count
+//     (mapped_ring.h), and the O-grid of two halves (o_grid.h, face_decomposed.h);
 //   - more holes, or when the above leave inverted quads or a worst corner under
 //     kGoodEnoughCorner: the face decomposition (face_decomposed.h), any outline;
 //   - a disk around a pole: polar templates (no decomposition).
@@ -54,6 +55,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
   };
   if (boundary.inner_wires == 1) {
     try {
+      if (auto ring = mesh_face_ring(index.face(f), f, boundary, nodes, index.vertex_count())) keep(std::move(*ring));
       keep(mesh_face_o_grid(index.face(f), f, boundary, nodes, index.vertex_count(), size, options.templates));
     } catch (const std::exception& e) {  // the decomposition below is the other route
       refusal = e.what();

@@ -192,6 +192,7 @@ class ShapeMeshContext {
     result_.interval_chains = intervals.chains;
     result_.chained_edges = intervals.chained_edges;
     result_.balanced_bands = intervals.balanced_bands;
+    result_.balanced_rings = intervals.balanced_rings;
   }
 
   // Stage "discretize edges": every edge once, shared by its faces.

@@ -79,6 +79,7 @@ struct ShapeMeshResult {
   int interval_chains = 0;               // chains of opposite edges given one count
   int chained_edges = 0;                 // edges in those chains
   int balanced_bands = 0;                // faces one segment wide given equal long sides
+  int balanced_rings = 0;                // faces of two loops given equal totals
   double template_seconds = 0;           // summed over faces (all threads)
   double placement_seconds = 0;          // interior nodes onto the surfaces, summed
 };

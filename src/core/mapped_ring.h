@@ -1,0 +1,26 @@
+// mesh_mapped_ring: a ring (one hole) whose outer loop and hole have the same number
+// of segments, meshed as one structured grid around the hole: no cut, every node of
+// both loops in two quads.
+//
+// The O-grid cuts a ring in two halves at its nearest points, and the halves' counts
+// then differ by the twist between the loops: on a ring one quad thick that puts a
+// transition where there is no room (scaled Jacobian 0.12 on a cylinder band of
+// as1-tu-203.stp at D/100). Here hole point i is paired with outer point i + k, the
+// offset k with the least summed squared distance, and the rows between them are
+// straight interpolations, as many as the mean pair distance over the loops' mean
+// spacing.
+#pragma once
+
+#include <optional>
+
+#include "core/planar_domain.h"
+#include "core/quad_mesh.h"
+
+namespace tquad {
+
+// The mesh (the domain's points first, bit-exact), or nothing when the domain is not
+// a ring with equal loop counts or the grid would not tile it (a quad not
+// counter-clockwise, or the quads' areas not summing to the ring's).
+std::optional<QuadMesh> mesh_mapped_ring(const PlanarDomain& domain);
+
+}  // namespace tquad
