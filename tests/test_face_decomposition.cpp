@@ -16,6 +16,7 @@
 #include "core/cut_intervals.h"
 #include "core/decomposed_mesher.h"
 #include "core/disk_o_grid.h"
+#include "core/mapped_ring.h"
 #include "core/input_error.h"
 #include "core/mesh_validation.h"
 #include "core/o_grid.h"
@@ -125,6 +126,23 @@ TEST(DiskOGrid, ACircleIsASquareAndFourMappedPatchesAtEverySize) {
   EXPECT_FALSE(mesh_disk_o_grid(ring).has_value());
   ring.loops.push_back(circle_hole({0, 0}, 1.0, 8));
   EXPECT_FALSE(mesh_disk_o_grid(ring).has_value());
+}
+
+TEST(MappedRing, EqualLoopCountsGiveOneStructuredGridAroundTheHole) {
+  // A 24-edge square around a 24-edge circle: no cut, every loop node in two quads.
+  PlanarDomain d;
+  d.loops.push_back(polygon_loop({{-2, -2}, {2, -2}, {2, 2}, {-2, 2}}, 6));
+  d.loops.push_back(circle_hole({0.2, -0.1}, 1.0, 24));
+  const std::optional<QuadMesh> mesh = mesh_mapped_ring(d);
+  ASSERT_TRUE(mesh.has_value());
+  expect_valid(d, *mesh, "ring of 24 and 24");
+  EXPECT_EQ(mesh->template_tree.substr(0, 1), "R");
+  std::vector<int> around(mesh->nodes.size(), 0);
+  for (const Quad& q : mesh->quads) for (NodeId n : q) ++around[n];
+  for (int i = 0; i < d.point_count(); ++i) EXPECT_EQ(around[i], 2) << "loop node " << i;
+  // Unequal counts: not such a ring.
+  d.loops[1] = circle_hole({0, 0}, 1.0, 16);
+  EXPECT_FALSE(mesh_mapped_ring(d).has_value());
 }
 
 TEST(FaceDecomposition, EveryPatchTotalIsEvenAfterIntervalAssignment) {
