@@ -12,6 +12,9 @@ namespace tquad {
 
 namespace {
 
+// Bands this many segments wide or less get equal long sides.
+constexpr int kNarrowBand = 2;
+
 // The shape edges along one side of a face, and its segment count.
 struct Side {
   std::vector<int> edges;
@@ -32,7 +35,7 @@ int balance_one_quad_bands(const ShapeIndex& index, const std::vector<char>& mes
     if (!meshed[f]) continue;
     int single = 0;
     for (TopExp_Explorer it(index.face(f), TopAbs_EDGE); it.More(); it.Next()) {
-      single += segments[index.edge_index(it.Current())] == 1 ? 1 : 0;
+      single += segments[index.edge_index(it.Current())] <= kNarrowBand ? 1 : 0;
     }
     if (single < 2) continue;
     candidates.push_back(f);
@@ -70,7 +73,7 @@ int balance_one_quad_bands(const ShapeIndex& index, const std::vector<char>& mes
     }
     if (!whole_edges) continue;
     for (int k = 0; k < 2; ++k) {
-      if (sides[k + 1].segments != 1 || sides[(k + 3) % 4].segments != 1) continue;
+      if (sides[k + 1].segments > kNarrowBand || sides[(k + 3) % 4].segments > kNarrowBand) continue;
       const Side& a = sides[k];
       const Side& c = sides[k + 2];
       if (a.segments == c.segments) continue;

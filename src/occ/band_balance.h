@@ -1,9 +1,12 @@
-// balance_one_quad_bands: a face whose chosen corners make it a band one segment wide
-// (two opposite sides of one segment each) can only be meshed with one quad per
-// segment along it, so its two long sides need equal counts: an all-quad mesh one
-// quad wide has no room for a transition (the templates' T1 and T2 need two rows).
-// The shorter long side's longest edge takes the difference: a free edge alone, or a
-// chained edge with its whole chain (so the chain's faces stay mapped).
+// balance_one_quad_bands: a face whose chosen corners make it a band one or two
+// segments wide (two opposite sides of at most kNarrowBand segments each) gets equal
+// counts on its two long sides, so it is a mapped grid. One quad across has no room
+// for a transition at all (the templates' T1 and T2 need two rows); two quads across
+// a fillet bent 90 degrees had room, but the transition folded a quad (scaled Jacobian
+// -0.05 against the quad's own normal on a toroidal fillet of
+// SampleCrankshaft4A.stp). The shorter long side's longest edge takes the difference:
+// a free edge alone, or a chained edge with its whole chain (so the chain's faces stay
+// mapped).
 #pragma once
 
 #include <vector>
