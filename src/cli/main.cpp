@@ -91,6 +91,11 @@ int run_cli(int argc, char** argv) {
                  "the refused faces; without it a refused face stops the job (exit 2)");
   mesh->add_flag("--progress", command.progress,
                  "CAD input: print each stage, and the faces meshed in tenths, on stderr");
+  mesh->add_option("--read-timeout", command.read.seconds,
+                   "CAD input: seconds the reader (a child process) may take before the file\n"
+                   "is refused as damaged (default 300)")
+      ->type_name("S")
+      ->check(CLI::Range(0.001, 1e6));
   mesh->add_flag("!--no-smooth", command.shape.smooth,
                  "CAD input: keep the template nodes where they are (no smoothing on the\n"
                  "surface)");

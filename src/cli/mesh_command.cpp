@@ -162,7 +162,9 @@ ShapeMesh mesh_shape_input(const MeshCommand& command, OutputFormat format, Qual
   if (command.progress) options.progress = progress_printer(err);
   if (!command.faces.empty()) options.faces = parse_face_list(command.faces);
   options.corners = parse_corner_specs(command.corners);
-  const TopoDS_Shape shape = read_shape(command.input);
+  const ReadShape read = read_shape_isolated(command.input, command.read);
+  const TopoDS_Shape& shape = read.shape;
+  for (int f : read.invalid_faces) options.damaged_faces[f] = kInvalidFaceReason;
   try {
     result = mesh_shape(shape, options);
   } catch (const InputError& e) {

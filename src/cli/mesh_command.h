@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/mesher.h"
+#include "occ/isolated_reader.h"
 #include "occ/shape_mesher.h"
 
 namespace tquad {
@@ -21,6 +22,7 @@ struct MeshCommand {
   std::string faces;                 // --faces "0,2,5-7"
   std::vector<std::string> corners;  // --corners "FACE:V1,V2,..."
   bool progress = false;             // --progress: stages and faces on stderr
+  ReadLimits read;                   // --read-timeout: the CAD reader's child process
 };
 
 // Exit status: 0 done; 2 the input (or the command line) is wrong; 1 an internal

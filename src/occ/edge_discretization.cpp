@@ -4,6 +4,7 @@
 #include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GCPnts_UniformAbscissa.hxx>
+#include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopoDS.hxx>
 
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/input_error.h"
 #include "occ/occ_vec.h"
 
 namespace tquad {
@@ -45,9 +47,47 @@ double tangent_turn(const BRepAdaptor_Curve& curve) {
 
 }  // namespace
 
-std::vector<int> edge_turn_minimums(const ShapeIndex& index) {
+std::map<int, std::string> unusable_edges(const ShapeIndex& index) {
+  std::map<int, std::string> bad;
+  for (int e = 0; e < index.edge_count(); ++e) {
+    const TopoDS_Edge edge = forward(index.edge(e));
+    if (BRep_Tool::Degenerated(edge)) continue;
+    try {
+      if (!BRep_Tool::IsGeometric(edge)) {
+        bad[e] = "has no 3D curve";
+        continue;
+      }
+      const BRepAdaptor_Curve curve(edge);
+      const double t0 = curve.FirstParameter(), t1 = curve.LastParameter();
+      if (!std::isfinite(t0) || !std::isfinite(t1) || !(t0 < t1)) {
+        bad[e] = "has no finite parameter range";
+        continue;
+      }
+      for (double t : {t0, 0.5 * (t0 + t1), t1}) {
+        gp_Pnt p;
+        gp_Vec d;
+        curve.D1(t, p, d);
+        if (!std::isfinite(p.X() + p.Y() + p.Z()) || !std::isfinite(d.X() + d.Y() + d.Z())) {
+          bad[e] = "evaluates to a non-finite point";
+          break;
+        }
+      }
+      if (bad.count(e)) continue;
+      const double length = GCPnts_AbscissaPoint::Length(curve);
+      if (!std::isfinite(length)) bad[e] = "has no finite length";
+    } catch (const Standard_Failure& failure) {
+      bad[e] = std::string("cannot be evaluated (OpenCASCADE: ") + failure.GetMessageString() + ")";
+    } catch (const std::exception& failure) {
+      bad[e] = std::string("cannot be evaluated (") + failure.what() + ")";
+    }
+  }
+  return bad;
+}
+
+std::vector<int> edge_turn_minimums(const ShapeIndex& index, const std::vector<char>& usable) {
   std::vector<int> minimum(index.edge_count(), 0);
   for (int e = 0; e < index.edge_count(); ++e) {
+    if (!usable.empty() && !usable[e]) continue;
     const TopoDS_Edge edge = forward(index.edge(e));
     if (BRep_Tool::Degenerated(edge)) continue;
     minimum[e] = std::max(1, static_cast<int>(std::ceil(tangent_turn(BRepAdaptor_Curve(edge)) / kMaxSegmentTurn - 1e-9)));
@@ -60,10 +100,11 @@ std::vector<int> edge_segment_counts(const ShapeIndex& index, double size, std::
 }
 
 std::vector<int> edge_segment_counts(const ShapeIndex& index, double size, const std::vector<int>& turn_minimums,
-                                     std::vector<double>& lengths) {
+                                     std::vector<double>& lengths, const std::vector<char>& usable) {
   std::vector<int> segments = turn_minimums;
   lengths.assign(index.edge_count(), 0.0);
   for (int e = 0; e < index.edge_count(); ++e) {
+    if (!usable.empty() && !usable[e]) continue;
     const TopoDS_Edge edge = forward(index.edge(e));
     if (BRep_Tool::Degenerated(edge)) continue;
     lengths[e] = GCPnts_AbscissaPoint::Length(BRepAdaptor_Curve(edge));
@@ -98,7 +139,7 @@ std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vect
     if (n > 1) {
       GCPnts_UniformAbscissa spacing(curve, n + 1, u0, u1);
       if (!spacing.IsDone() || spacing.NbPoints() != n + 1) {
-        throw std::runtime_error("arc-length discretization of edge " + std::to_string(e) + " failed");
+        throw InputError("edge " + std::to_string(e) + ": its arc-length discretization failed (a damaged curve?)");
       }
       for (int i = 2; i <= n; ++i) out.params.push_back(spacing.Parameter(i));
     }

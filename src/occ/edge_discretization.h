@@ -3,6 +3,8 @@
 // Vertex nodes come first in the node array, then each edge's inner nodes.
 #pragma once
 
+#include <map>
+#include <string>
 #include <vector>
 
 #include "core/quad_mesh.h"
@@ -19,7 +21,13 @@ struct EdgeNodes {
 
 // Per edge, one segment per 45 degrees of its curve's turning, at least 1 (0 for a
 // degenerate edge): the fewest segments that stand for its shape.
-std::vector<int> edge_turn_minimums(const ShapeIndex& index);
+// Edges whose 3D curve OpenCASCADE cannot evaluate (none, a failure, a non-finite
+// point, tangent or length), each with the reason; a damaged file's edges. Degenerate
+// edges are not listed.
+std::map<int, std::string> unusable_edges(const ShapeIndex& index);
+
+// `usable`: per edge, or empty for all; the others get 0.
+std::vector<int> edge_turn_minimums(const ShapeIndex& index, const std::vector<char>& usable = {});
 
 // Segments of each edge from the target size: round(length / size), at least 1 and
 // at least one per 45 degrees of the curve's turning; degenerate edges get 0.
@@ -27,7 +35,7 @@ std::vector<int> edge_segment_counts(const ShapeIndex& index, double size,
                                      std::vector<double>& lengths);
 // The same with the turning minimums already computed (edge_turn_minimums).
 std::vector<int> edge_segment_counts(const ShapeIndex& index, double size, const std::vector<int>& turn_minimums,
-                                     std::vector<double>& lengths);
+                                     std::vector<double>& lengths, const std::vector<char>& usable = {});
 
 // Places the nodes: vertices (nodes 0 .. vertex_count-1), then the inner nodes of each
 // edge with segments[e] > 0 (edges of unmeshed faces can be given 0 and are skipped).

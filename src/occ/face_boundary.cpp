@@ -176,6 +176,9 @@ FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::v
                            const std::vector<Vec3>& nodes) {
   const TopoDS_Face& face = index.face(face_index);
   const TopoDS_Wire outer = BRepTools::OuterWire(face);
+  if (outer.IsNull()) {
+    throw InputError("face " + std::to_string(face_index) + " has no outer wire (a damaged file?)");
+  }
   FaceBoundary b;
   for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) {
     if (w.Current().IsSame(outer)) continue;
@@ -184,6 +187,9 @@ FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::v
     b.holes.push_back({hole.nodes, hole.uv});
   }
   const WireWalk walk = walk_wire(outer, face, face_index, index, edges);
+  if (walk.nodes.empty()) {
+    throw InputError("face " + std::to_string(face_index) + " has no edge in its outer wire (a damaged file?)");
+  }
   b.nodes = walk.nodes;
   b.uv = walk.uv;
   b.has_degenerate_edge = walk.has_degenerate_edge;

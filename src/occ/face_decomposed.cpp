@@ -62,6 +62,14 @@ class FaceChart {
             int vertex_nodes)
       : face_(face), name_("face " + std::to_string(face_index)), b_(b), nodes_(nodes), surface_(face) {
     if (b.has_degenerate_edge || b.polar) throw InputError(name_ + " has a pole; it is not decomposed");
+    if (b.uv.size() < 3 || b.uv.size() != b.nodes.size()) {
+      throw InputError(name_ + " has only " + std::to_string(b.nodes.size()) + " boundary segments");
+    }
+    for (const NodeLoop& hole : b.holes) {
+      if (hole.uv.size() < 3 || hole.uv.size() != hole.nodes.size()) {
+        throw InputError(name_ + " has a hole of only " + std::to_string(hole.nodes.size()) + " segments");
+      }
+    }
     chart_ = chart_for(surface_, b.uv);
     if (signed_uv_area(b.uv) < 0) chart_.mirror = -1;
     add_loop(b.uv, b.nodes, vertex_nodes, false);

@@ -2,12 +2,14 @@
 
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
+#include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <optional>
@@ -25,13 +27,24 @@ namespace tquad {
 
 namespace {
 
-double default_size(const TopoDS_Shape& shape) {
+// Beyond this many units across, a shape's coordinates are taken for damage (1e12
+// mm is a million km): the sizes and counts derived from them would be meaningless.
+constexpr double kMaxShapeExtent = 1e12;
+
+// The shape's bounding-box diagonal; throws InputError when it is absurd.
+double shape_diagonal(const TopoDS_Shape& shape) {
   Bnd_Box box;
   BRepBndLib::Add(shape, box);
-  if (box.IsVoid()) return 1.0;
+  if (box.IsVoid()) return 25.0;
   double x0, y0, z0, x1, y1, z1;
   box.Get(x0, y0, z0, x1, y1, z1);
-  return std::sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0) + (z1 - z0) * (z1 - z0)) / 25.0;
+  const double diagonal = std::sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0) + (z1 - z0) * (z1 - z0));
+  if (!(diagonal <= kMaxShapeExtent)) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.3g", diagonal);
+    throw InputError(std::string("the shape is ") + text + " units across: its coordinates are absurd (a damaged file?)");
+  }
+  return diagonal;
 }
 
 std::vector<char> meshed_faces(const ShapeIndex& index, const std::vector<int>& faces) {
@@ -149,7 +162,13 @@ class ShapeMeshContext {
     throw_if_cancelled();
     report(name, 0, 1);
     const auto start = std::chrono::steady_clock::now();
-    work();
+    try {
+      work();
+    } catch (const Standard_Failure& failure) {  // OpenCASCADE on a damaged shape; no std::exception
+      const std::string what = *failure.GetMessageString() ? failure.GetMessageString() : failure.DynamicType()->Name();
+      throw InputError(std::string("OpenCASCADE failed on the shape in stage '") + name + "': " + what +
+                       " (a damaged file?)");
+    }
     result_.stage_seconds[name] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     throw_if_cancelled();
     report(name, 1, 1);
@@ -167,13 +186,26 @@ class ShapeMeshContext {
   // Stage "index": faces to mesh, the target size, and the edges they need.
   void index_faces() {
     meshed_ = meshed_faces(index_, options_.faces);
-    result_.size = options_.size > 0 ? options_.size : default_size(shape_);
-    edge_floor_ = edge_turn_minimums(index_);
-    raise_three_edge_face_floors(index_, meshed_, edge_floor_);
-    sized_ = edge_segment_counts(index_, result_.size, edge_floor_, lengths_);
+    const double diagonal = shape_diagonal(shape_);  // checked even when the size is given
+    result_.size = options_.size > 0 ? options_.size : diagonal / 25.0;
+    // Damaged faces (the reader's check, or an edge whose curve cannot be evaluated)
+    // are refused before anything else looks at them; the rest is meshed without them.
+    damaged_ = options_.damaged_faces;
+    std::vector<char> usable(index_.edge_count(), 1);
+    for (const auto& [e, why] : unusable_edges(index_)) {
+      usable[e] = 0;
+      for (int f : index_.faces_of_edge(e)) {
+        if (!damaged_.count(f)) damaged_[f] = "its edge " + std::to_string(e) + " " + why + " (a damaged file?)";
+      }
+    }
+    to_mesh_ = meshed_;
+    for (const auto& [f, why] : damaged_) if (f >= 0 && f < index_.face_count()) to_mesh_[f] = 0;
+    edge_floor_ = edge_turn_minimums(index_, usable);
+    raise_three_edge_face_floors(index_, to_mesh_, edge_floor_);
+    sized_ = edge_segment_counts(index_, result_.size, edge_floor_, lengths_, usable);
     needed_.assign(index_.edge_count(), 0);
     for (int f = 0; f < index_.face_count(); ++f) {
-      if (!meshed_[f]) continue;
+      if (!to_mesh_[f]) continue;
       for (TopExp_Explorer it(index_.face(f), TopAbs_EDGE); it.More(); it.Next()) needed_[index_.edge_index(it.Current())] = 1;
     }
     minimum_.assign(index_.edge_count(), 0);
@@ -187,7 +219,7 @@ class ShapeMeshContext {
     // No change goes below the curvature and three-edge-face bounds or a refinement.
     std::vector<int> floor = edge_floor_;
     for (int e = 0; e < index_.edge_count(); ++e) floor[e] = std::max(floor[e], minimum_[e]);
-    const IntervalReport intervals = assign_shape_intervals(index_, meshed_, lengths_, result_.size, segments_, floor);
+    const IntervalReport intervals = assign_shape_intervals(index_, to_mesh_, lengths_, result_.size, segments_, floor);
     result_.changes = intervals.changes;
     result_.interval_chains = intervals.chains;
     result_.chained_edges = intervals.chained_edges;
@@ -210,7 +242,12 @@ class ShapeMeshContext {
     int done = 0;  // counted under the progress lock, so reports never go backwards
     run_parallel(index_.face_count(), options_.threads, [&](int f) {
       if (!meshed_[f] || cancelled()) return;
-      outcomes_[f] = mesh_one_face(index_, f, edges_, result_.mesh.nodes, options_, result_.size);
+      const auto damaged = damaged_.find(f);
+      if (damaged != damaged_.end()) {
+        outcomes_[f].reason = "face " + std::to_string(f) + ": " + damaged->second;
+      } else {
+        outcomes_[f] = mesh_one_face(index_, f, edges_, result_.mesh.nodes, options_, result_.size);
+      }
       if (!options_.progress) return;
       const std::lock_guard<std::mutex> lock(progress_mutex_);
       options_.progress(MeshProgress{"mesh faces", ++done, total});
@@ -244,6 +281,10 @@ class ShapeMeshContext {
       }
       throw InputError(text + " (--keep-going meshes the other faces)");
     }
+    if (!mesh.refused_faces.empty() &&
+        static_cast<std::size_t>(std::count(meshed_.begin(), meshed_.end(), 1)) == mesh.refused_faces.size()) {
+      throw InputError("no face could be meshed; the first refused: " + mesh.refused_faces.front().reason);
+    }
     for (int f = 0; f < index_.face_count(); ++f) {
       if (!meshed_[f] || !outcomes_[f].ok) continue;
       const FaceMeshResult& m = outcomes_[f].mesh;
@@ -276,6 +317,8 @@ class ShapeMeshContext {
   std::vector<char> meshed_, needed_;
   std::vector<double> lengths_;
   std::vector<int> sized_, minimum_, segments_, edge_floor_;
+  std::map<int, std::string> damaged_;  // faces refused before meshing, with the reason
+  std::vector<char> to_mesh_;           // meshed_ without the damaged faces
   std::vector<EdgeNodes> edges_;
   std::vector<FaceOutcome> outcomes_;
 };

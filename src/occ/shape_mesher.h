@@ -50,6 +50,9 @@ struct ShapeMeshOptions {
   // Per face, the shape vertices to use as corners (2 to 4).
   std::map<int, std::vector<int>> corners;
   MeshOptions templates;
+  // Faces refused before meshing, with the reason (the reader's geometry check:
+  // isolated_reader.h).
+  std::map<int, std::string> damaged_faces;
   // Smooth each face's mesh on its surface (surface_smoothing.h).
   bool smooth = true;
   // Worker threads for the faces; <= 0: all cores.

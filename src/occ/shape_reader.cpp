@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 
 #include "core/input_error.h"
@@ -31,6 +32,35 @@ std::string extension_of(const std::string& path) {
 void require_faces(const TopoDS_Shape& shape, const std::string& what) {
   if (shape.IsNull() || !TopExp_Explorer(shape, TopAbs_FACE).More()) {
     throw InputError(what + " holds no face to mesh");
+  }
+}
+
+// The last non-blank line of a file (trailing spaces and carriage returns dropped),
+// read from at most its last 4 KiB.
+std::string last_line(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  const std::streamoff from = std::max<std::streamoff>(0, size - 4096);
+  in.seekg(from);
+  std::string tail((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  while (!tail.empty() && std::isspace(static_cast<unsigned char>(tail.back()))) tail.pop_back();
+  const auto start = tail.find_last_of('\n');
+  std::string line = start == std::string::npos ? tail : tail.substr(start + 1);
+  while (!line.empty() && (line.back() == ' ' || line.back() == '\r')) line.pop_back();
+  return line;
+}
+
+// A STEP file ends with "END-ISO-10303-21;" and an IGES file with its Terminate
+// section (column 73 'T'); OpenCASCADE's readers mesh what they find in a file cut
+// short, so a truncated file would be meshed in part.
+void require_complete(const std::string& path, const std::string& ext) {
+  const std::string line = last_line(path);
+  if ((ext == "step" || ext == "stp") && line.find("END-ISO-10303-21;") == std::string::npos) {
+    throw InputError("'" + path + "' is cut short: a STEP file ends with END-ISO-10303-21;");
+  }
+  if ((ext == "iges" || ext == "igs") && (line.size() < 73 || line[72] != 'T')) {
+    throw InputError("'" + path + "' is cut short: an IGES file ends with its Terminate section");
   }
 }
 
@@ -118,6 +148,7 @@ TopoDS_Shape read_shape(const std::string& path) {
   if (!std::ifstream(path).good()) throw InputError("cannot open '" + path + "'");
   const std::string ext = extension_of(path);
   TopoDS_Shape shape;
+  if (ext == "step" || ext == "stp" || ext == "iges" || ext == "igs") require_complete(path, ext);
   if (ext == "step" || ext == "stp") {
     STEPControl_Reader reader;
     shape = read_with(reader, path, "STEP");

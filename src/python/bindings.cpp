@@ -15,6 +15,7 @@
 #include "core/quality.h"
 #include "core/shape_mesh.h"
 #include "occ/shape_mesher.h"
+#include "occ/isolated_reader.h"
 #include "occ/shape_reader.h"
 
 namespace py = pybind11;
@@ -152,8 +153,11 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
   QualitySummary quality;
   {
     py::gil_scoped_release release;
-    const TopoDS_Shape shape = looks_like_brep_text(brep_text_or_path) ? read_brep_text(brep_text_or_path)
-                                                                        : read_shape(brep_text_or_path);
+    // Read in a child process: a damaged file must not take FreeCAD down.
+    const ReadShape read = looks_like_brep_text(brep_text_or_path) ? read_brep_text_isolated(brep_text_or_path)
+                                                                   : read_shape_isolated(brep_text_or_path);
+    const TopoDS_Shape& shape = read.shape;
+    for (int f : read.invalid_faces) options.damaged_faces[f] = kInvalidFaceReason;
     try {
       result = mesh_shape(shape, options);
     } catch (const MeshCancelled&) {

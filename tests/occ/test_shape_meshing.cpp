@@ -186,9 +186,18 @@ TEST(ShapeMeshing, PolesAndSeams) {
   r = check_primitive(BRepPrimAPI_MakeCone(10.0, 0.0, 20.0).Shape(), "cone");
   EXPECT_EQ(r.refused, 0);
   EXPECT_TRUE(r.closed);
-  // A whole sphere has no edge but its seam and two poles: refused, with a reason.
-  r = check_primitive(BRepPrimAPI_MakeSphere(10.0).Shape(), "sphere");
-  EXPECT_EQ(r.refused, 1);
+  // A whole sphere has no edge but its seam and two poles: refused, with a reason;
+  // with no other face, nothing is meshed, which is an error even with keep_going
+  // (never an empty mesh).
+  ShapeMeshOptions options;
+  options.keep_going = true;
+  try {
+    mesh_shape(BRepPrimAPI_MakeSphere(10.0).Shape(), options);
+    ADD_FAILURE() << "a whole sphere gave a mesh";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no face could be meshed"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("seam and pole"), std::string::npos) << e.what();
+  }
 }
 
 TEST(ShapeMeshing, ConeApexIsAMeshNode) {

@@ -102,6 +102,26 @@ class MeshShapeTest(unittest.TestCase):
             with self.assertRaisesRegex(ValueError, "not a BREP"):
                 tquad.mesh_shape(garbage)
 
+    def test_a_file_that_crashes_the_reader_raises_and_the_interpreter_lives(self):
+        # Entity #138 renumbered #178: OpenCASCADE's STEP transfer dereferences the
+        # reference left dangling (SIGSEGV); the reader runs in a child process.
+        with open(os.path.join(SHAPES, "plate_with_hole.step")) as f:
+            text = f.read()
+        self.assertIn("#138 = LINE(", text)
+        with tempfile.TemporaryDirectory() as folder:
+            damaged = os.path.join(folder, "dangling.step")
+            with open(damaged, "w") as f:
+                f.write(text.replace("#138 = LINE(", "#178 = LINE(", 1))
+            with self.assertRaisesRegex(ValueError, "crashed"):
+                tquad.mesh_shape(damaged)
+            cut = os.path.join(folder, "half.step")
+            with open(cut, "w") as f:
+                f.write(text[: len(text) // 2])
+            with self.assertRaisesRegex(ValueError, "cut short"):
+                tquad.mesh_shape(cut)
+        # Still alive, and still meshing.
+        self.assertGreater(len(tquad.mesh_shape(os.path.join(SHAPES, "plate_with_hole.step")).quads), 0)
+
     def test_progress_reports_stages_and_can_cancel(self):
         path = os.path.join(SHAPES, "filleted_bracket.brep")
         seen = []

@@ -1,0 +1,184 @@
+#include "occ/isolated_reader.h"
+
+#include <BRepCheck_Analyzer.hxx>
+#include <BinTools.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <sstream>
+
+#include "core/input_error.h"
+#include "occ/shape_reader.h"
+
+namespace tquad {
+
+namespace {
+
+// Sanitizers reserve terabytes of address space: no address-space limit under them.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+constexpr bool kLimitAddressSpace = false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+constexpr bool kLimitAddressSpace = false;
+#else
+constexpr bool kLimitAddressSpace = true;
+#endif
+#else
+constexpr bool kLimitAddressSpace = true;
+#endif
+
+bool write_all(int fd, const std::string& bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+// The child: reads, and writes 'S' + binary BREP or 'E' + message to fd; never returns.
+[[noreturn]] void run_reader(int fd, const std::function<TopoDS_Shape()>& read, const ReadLimits& limits) {
+  // OpenCASCADE's readers print their complaints; the caller's stdout (a JSON report)
+  // and stderr (one line per error) are not theirs.
+  const int devnull = open("/dev/null", O_WRONLY);
+  if (devnull >= 0) {
+    dup2(devnull, STDOUT_FILENO);
+    dup2(devnull, STDERR_FILENO);
+  }
+  if (kLimitAddressSpace) {
+    const rlimit memory{limits.memory_bytes, limits.memory_bytes};
+    setrlimit(RLIMIT_AS, &memory);
+  }
+  std::string message;
+  try {
+    const TopoDS_Shape shape = read();
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(shape, TopAbs_FACE, faces);
+    std::string invalid;
+    int count = 0;
+    for (int i = 1; i <= faces.Extent(); ++i) {
+      if (BRepCheck_Analyzer(faces(i)).IsValid()) continue;
+      invalid += " " + std::to_string(i - 1);
+      ++count;
+    }
+    std::ostringstream out;
+    BinTools::Write(shape, out);
+    message = "S" + std::to_string(faces.Extent()) + " " + std::to_string(count) + invalid + "\n" + out.str();
+  } catch (const InputError& e) {
+    message = std::string("E") + e.what();
+  } catch (const std::bad_alloc&) {
+    message = "M";
+  } catch (...) {
+    message = "C";
+  }
+  _exit(write_all(fd, message) ? 0 : 3);
+}
+
+// Runs `read` in a child; `what` names the input in messages.
+ReadShape read_in_child(const std::function<TopoDS_Shape()>& read, const std::string& what,
+                        const ReadLimits& limits) {
+  int fds[2];
+  if (pipe(fds) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+  const pid_t child = fork();
+  if (child < 0) {
+    close(fds[0]);
+    close(fds[1]);
+    throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+  }
+  if (child == 0) {
+    close(fds[0]);
+    run_reader(fds[1], read, limits);
+  }
+  close(fds[1]);
+  std::string payload;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(limits.seconds);
+  bool late = false;
+  char buffer[1 << 16];
+  for (;;) {
+    const double left = std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
+    if (left <= 0) { late = true; break; }
+    pollfd p{fds[0], POLLIN, 0};
+    const int ready = poll(&p, 1, static_cast<int>(std::min(left * 1000.0 + 1, 1e9)));
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready == 0) continue;  // the deadline is checked above
+    const ssize_t n = ::read(fds[0], buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;  // end of file: the child is done (or died)
+    payload.append(buffer, static_cast<std::size_t>(n));
+  }
+  close(fds[0]);
+  if (late) kill(child, SIGKILL);
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (late) {
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%g", limits.seconds);
+    throw InputError(what + ": reading did not finish within " + seconds + " s (a damaged file?)");
+  }
+  if (WIFSIGNALED(status)) {
+    const int sig = WTERMSIG(status);
+    throw InputError(what + " is damaged: OpenCASCADE's reader crashed on it (signal " + std::to_string(sig) + ", " +
+                     strsignal(sig) + ")");
+  }
+  if (payload.empty() || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    throw InputError(what + " is damaged: OpenCASCADE's reader failed on it");
+  }
+  switch (payload[0]) {
+    case 'E': throw InputError(payload.substr(1));
+    case 'M': throw InputError(what + ": reading it needs more than the memory limit (a damaged file?)");
+    case 'C': throw InputError(what + " is damaged: OpenCASCADE could not read it");
+    case 'S': break;
+    default: throw std::logic_error("unexpected reply from the reader process");
+  }
+  // "S<faces> <invalid count> <indices...>\n<binary BREP>"
+  const std::size_t header_end = payload.find('\n');
+  if (header_end == std::string::npos) throw std::logic_error("the reader process's reply has no header");
+  std::istringstream header(payload.substr(1, header_end - 1));
+  int face_count = 0, invalid = 0;
+  header >> face_count >> invalid;
+  ReadShape result;
+  for (int i = 0, f = 0; i < invalid && header >> f; ++i) result.invalid_faces.push_back(f);
+  std::istringstream in(payload.substr(header_end + 1));
+  BinTools::Read(result.shape, in);
+  if (result.shape.IsNull()) throw std::logic_error("the reader process's shape did not come back");
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(result.shape, TopAbs_FACE, faces);
+  if (faces.Extent() != face_count) throw std::logic_error("the shape came back with another face count");
+  return result;
+}
+
+}  // namespace
+
+ReadShape read_shape_isolated(const std::string& path, const ReadLimits& limits) {
+  struct stat info {};
+  if (stat(path.c_str(), &info) != 0) throw InputError("cannot open '" + path + "'");
+  if (!S_ISREG(info.st_mode)) throw InputError("'" + path + "' is not a regular file");
+  if (static_cast<unsigned long long>(info.st_size) > limits.file_bytes) {
+    throw InputError("'" + path + "' is " + std::to_string(info.st_size) + " bytes, over the limit of " +
+                     std::to_string(limits.file_bytes));
+  }
+  if (!is_shape_path(path)) return {read_shape(path), {}};  // names the unknown format
+  return read_in_child([&] { return read_shape(path); }, "'" + path + "'", limits);
+}
+
+ReadShape read_brep_text_isolated(const std::string& brep, const ReadLimits& limits) {
+  return read_in_child([&] { return read_brep_text(brep); }, "the BREP text", limits);
+}
+
+}  // namespace tquad

@@ -1,0 +1,46 @@
+// read_shape_isolated: the CAD readers run in a child process, so that a damaged file
+// cannot take the caller down.
+//
+// OpenCASCADE's readers are not hardened against damaged input: random one-byte edits
+// of shipped examples made them crash (SIGSEGV inside the STEP transfer, a trimmed
+// curve with no basis in a BREP), abort, or loop for ever (a huge curve count),
+// taking the process along, which inside FreeCAD is the user's session. Here the
+// file is read by a forked child under a memory limit and a deadline; it sends the
+// shape back as binary BREP (OpenCASCADE's own writer, read back in the parent) or
+// its InputError message, with the faces the geometry checker finds invalid. A crash, an abort, a memory overrun or the deadline becomes
+// an InputError naming the file; nothing else of the child survives.
+#pragma once
+
+#include <TopoDS_Shape.hxx>
+
+#include <string>
+#include <vector>
+
+namespace tquad {
+
+struct ReadLimits {
+  double seconds = 300;                          // wall time for reading
+  unsigned long long memory_bytes = 16ULL << 30;  // address space of the reader
+  unsigned long long file_bytes = 4ULL << 30;     // larger input files are refused
+};
+
+// The reason given for a face in ReadShape::invalid_faces.
+inline constexpr const char* kInvalidFaceReason =
+    "OpenCASCADE's checker finds its geometry invalid (a damaged file?)";
+
+struct ReadShape {
+  TopoDS_Shape shape;
+  // Faces (numbered as ShapeIndex numbers them) whose geometry OpenCASCADE's checker
+  // (BRepCheck_Analyzer, run in the child too) finds invalid: a missing wire or
+  // pcurve, a wire that does not close, an edge off its surface.
+  std::vector<int> invalid_faces;
+};
+
+// As read_shape (shape_reader.h), in a child process. Also refuses what is not a
+// regular file (a directory, /dev/zero) and files over limits.file_bytes.
+ReadShape read_shape_isolated(const std::string& path, const ReadLimits& limits = {});
+
+// As read_brep_text, in a child process.
+ReadShape read_brep_text_isolated(const std::string& brep, const ReadLimits& limits = {});
+
+}  // namespace tquad

@@ -1,0 +1,100 @@
+// Damaged CAD files: the reader runs in a child process (occ/isolated_reader.h), so a
+// file that crashes OpenCASCADE's reader, or makes it loop, is refused with exit 2
+// and one line naming the file; nothing is written and the command itself survives.
+// The damaged files are made here from the shipped examples by the edits named in
+// each test (found by random one-byte edits: each crashed or hung the reader in the
+// same process before).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cli_test_support.h"
+
+namespace tquad::cli_test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kShapes = TQUAD_SHAPES_DIR;
+
+// The text of a shipped example with `from` replaced by `to` (once; `from` must occur).
+std::string edited_example(const std::string& name, const std::string& from, const std::string& to) {
+  std::string text = read_text(kShapes + "/" + name);
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from << " not in " << name;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+class DamagedCad : public CliTest {
+ protected:
+  // Refused with exit 2, the message holding `parts`, no output and no temporary
+  // file left in the folder.
+  void expect_damaged(const std::string& file, const std::vector<std::string>& extra,
+                      const std::vector<std::string>& parts) {
+    expect_refused(file, extra, parts, "out.vtu");
+    for (const auto& entry : fs::directory_iterator(fs::path(file).parent_path())) {
+      const std::string name = entry.path().filename().string();
+      EXPECT_EQ(name.find("out"), std::string::npos) << "left behind: " << name;
+    }
+  }
+};
+
+TEST_F(DamagedCad, AStepReferenceLeftDanglingCrashesOnlyTheReader) {
+  // Entity #138 (a LINE) renumbered #178: #137 refers to an entity that is gone, and
+  // OpenCASCADE's STEP transfer dereferences it (SIGSEGV).
+  const std::string file = path("dangling.step");
+  write_text(file, edited_example("plate_with_hole.step", "#138 = LINE(", "#178 = LINE("));
+  expect_damaged(file, {}, {file, "is damaged", "crashed"});
+}
+
+TEST_F(DamagedCad, ABrepCurveCountOfTensOfThousandsMakesTheReaderLoopUntilItsDeadline) {
+  // An edge's count of curve representations 1 -> 99999: OpenCASCADE's BREP reader
+  // reads on for ever; the child is killed at the deadline.
+  const std::string file = path("endless.brep");
+  write_text(file, edited_example("filleted_bracket.brep", "Ed\n 1e-07 1 1 0\n1  4 0 3.14159265358",
+                                  "Ed\n 1e-07 1 1 0\n99999  4 0 3.14159265358"));
+  expect_damaged(file, {"--read-timeout", "2"}, {file, "did not finish within 2 s"});
+}
+
+TEST_F(DamagedCad, AStepFileCutShortIsRefusedNotMeshedInPart) {
+  const std::string text = read_text(kShapes + "/plate_with_hole.step");
+  const std::string file = path("half.step");
+  write_text(file, text.substr(0, text.size() / 2));
+  expect_damaged(file, {}, {file, "cut short", "END-ISO-10303-21"});
+}
+
+TEST_F(DamagedCad, NotARegularFile) {
+  const std::string folder = path("folder.step");
+  fs::create_directory(folder);
+  expect_refused(folder, {}, {folder, "not a regular file"}, "out.vtu");
+}
+
+TEST_F(DamagedCad, EmptyFiles) {
+  for (const std::string ext : {".step", ".iges", ".brep"}) {
+    const std::string file = path("empty" + ext);
+    write_text(file, "");
+    expect_damaged(file, {}, {file});
+  }
+}
+
+TEST_F(DamagedCad, TheReadTimeoutRefusesASlowReadAndIsChecked) {
+  // A tiny deadline stands in for a reader that loops: the child is killed.
+  const std::string file = kShapes + "/plate_with_hole.step";
+  const RunResult r = run_tquad({"mesh", file, "-o", path("out.vtu"), "--read-timeout", "0.001"});
+  EXPECT_EQ(r.exit_status, 2) << r.err;
+  EXPECT_NE(r.err.find("did not finish within 0.001 s"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("out.vtu")));
+  EXPECT_EQ(run_tquad({"mesh", file, "-o", path("out.vtu"), "--read-timeout", "-1"}).exit_status, 2);
+}
+
+TEST_F(DamagedCad, TheGoodExampleStillReadsThroughTheChild) {
+  const RunResult r = run_tquad({"mesh", kShapes + "/plate_with_hole.step", "-o", path("out.vtu")});
+  EXPECT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(path("out.vtu")));
+}
+
+}  // namespace
+}  // namespace tquad::cli_test
