@@ -6,6 +6,10 @@
 #include <fstream>
 #include <system_error>
 
+#include <sys/stat.h>
+#include <unistd.h>
+#include <cstdlib>
+
 #include "core/input_error.h"
 
 namespace tquad {
@@ -17,10 +21,23 @@ void remove_quietly(const std::string& path) {
   std::filesystem::remove(path, ignored);
 }
 
+// A new file next to `path` with a name no other writer has (mkstemp: O_EXCL), with
+// the permissions a plain new file would get; returns its name.
+std::string unique_temporary(const std::string& path) {
+  std::string name = path + ".tmp.XXXXXX";
+  const int fd = mkstemp(name.data());
+  if (fd < 0) throw InputError("cannot create a file next to " + path + ": " + std::strerror(errno));
+  const mode_t mask = umask(0);
+  umask(mask);
+  fchmod(fd, 0666 & ~mask);
+  close(fd);
+  return name;
+}
+
 }  // namespace
 
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
-  const std::string temporary = path + ".tmp";
+  const std::string temporary = unique_temporary(path);
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out) {

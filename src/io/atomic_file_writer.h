@@ -1,6 +1,8 @@
 // write_file_atomically: a file is either written completely or not at all. The
-// content goes to PATH.tmp first and is renamed over PATH only after every byte was
-// written and flushed, so a failure (exception, full disk) never leaves a partial PATH.
+// content goes to a new file PATH.tmp.XXXXXX first (a name no other writer has) and is
+// renamed over PATH only after every byte was written and flushed, so a failure
+// (exception, full disk) never leaves a partial PATH, and two runs writing PATH at once
+// each leave their own complete file (the last rename wins).
 #pragma once
 
 #include <functional>
@@ -9,10 +11,10 @@
 
 namespace tquad {
 
-// Calls `write` with a stream on PATH.tmp, then renames it to PATH. Throws InputError
+// Calls `write` with a stream on the temporary file, then renames it to PATH. Throws InputError
 // naming the file when it cannot be created or written (a wrong output path is a
-// user error); an exception thrown by `write` is passed on. PATH.tmp is removed on
-// every failure.
+// user error); an exception thrown by `write` is passed on. The temporary file is
+// removed on every failure.
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 }  // namespace tquad

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/count_fitting.h"
 #include "core/input_error.h"
 #include "occ/occ_vec.h"
 
@@ -108,6 +109,9 @@ std::vector<int> edge_segment_counts(const ShapeIndex& index, double size, const
     const TopoDS_Edge edge = forward(index.edge(e));
     if (BRep_Tool::Degenerated(edge)) continue;
     lengths[e] = GCPnts_AbscissaPoint::Length(BRepAdaptor_Curve(edge));
+    if (!(lengths[e] / size <= kMaxCurveSegments)) {  // before an int holds the count
+      check_goal(lengths[e] / size, "edge " + std::to_string(e));
+    }
     segments[e] = std::max(segments[e], static_cast<int>(std::lround(lengths[e] / size)));
   }
   return segments;

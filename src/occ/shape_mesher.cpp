@@ -225,6 +225,17 @@ class ShapeMeshContext {
     result_.chained_edges = intervals.chained_edges;
     result_.balanced_bands = intervals.balanced_bands;
     result_.balanced_rings = intervals.balanced_rings;
+    // Before anything is allocated: a face of E boundary segments has at least
+    // E / 2 - 1 quads (nodes = 1 + quads + E / 2 - holes, and its E boundary nodes).
+    long long at_least = 0;
+    for (int f = 0; f < index_.face_count(); ++f) {
+      if (to_mesh_[f]) at_least += std::max(0, face_boundary_total(index_, f, segments_) / 2 - 1);
+    }
+    if (at_least > options_.templates.max_quads) {
+      throw InputError("the edge counts alone give at least " + std::to_string(at_least) +
+                       " quads, over the limit of " + std::to_string(options_.templates.max_quads) +
+                       " (--max-quads); use a larger --size");
+    }
   }
 
   // Stage "discretize edges": every edge once, shared by its faces.

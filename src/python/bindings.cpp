@@ -1,6 +1,7 @@
 // tquad._core: the pybind11 binding of the mesher. The Python package `tquad`
 // (tquad/__init__.py) is the public face; this module is private to it.
 #include <atomic>
+#include <cmath>
 #include <optional>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -148,7 +149,9 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
   options.allow_inverted = allow_inverted;
   options.threads = threads;
   options.templates = template_options(t4_ratio, t5_cut_edges, max_quads);
-  if (size < 0) throw InputError("size must be positive (or 0 for the default)");
+  if (!(size >= 0) || !std::isfinite(size)) {
+    throw InputError("size must be a finite positive number (or 0 for the default), not " + std::to_string(size));
+  }
   ShapeMeshResult result;
   QualitySummary quality;
   {

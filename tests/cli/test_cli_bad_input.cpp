@@ -1,6 +1,7 @@
 // Every wrong input gives exit status 2, one line on stderr that starts
 // "tquad: error: " and names the file and the point / segment / curve at fault, and
-// no output file (not even OUT.tmp).
+// no output file (not even a temporary OUT.tmp.XXXXXX).
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -234,6 +235,30 @@ TEST_F(BadInput, FailedRunLeavesAnExistingOutputUntouched) {
   write_text(path("out.json"), "previous content");
   expect_refused(file, {}, {file, "odd"});
   EXPECT_EQ(read_text(path("out.json")), "previous content");
+}
+
+TEST_F(BadInput, TwoRunsWritingOneOutputAtOnceLeaveOneCompleteFile) {
+  // Each run writes its own temporary file and renames it: the output is one run's
+  // complete file, never a mix, and no temporary file is left.
+  std::vector<int> corners_a, corners_b;
+  const std::string a = boundary_file("a.json", square({300, 320, 300, 320}, corners_a), corners_a);
+  const std::string b = boundary_file("b.json", square({310, 330, 310, 330}, corners_b), corners_b);
+  ASSERT_EQ(run_tquad({"mesh", a, "-o", path("alone_a.json")}).exit_status, 0);
+  ASSERT_EQ(run_tquad({"mesh", b, "-o", path("alone_b.json")}).exit_status, 0);
+  const std::string alone_a = read_text(path("alone_a.json")), alone_b = read_text(path("alone_b.json"));
+  const std::string exe = TQUAD_EXE;
+  for (int round = 0; round < 5; ++round) {
+    const std::string out = path("out.json");
+    const RunResult r = run_program(
+        "/bin/sh", {"-c", "'" + exe + "' mesh '" + a + "' -o '" + out + "' & '" + exe + "' mesh '" + b + "' -o '" +
+                              out + "' & wait"});
+    ASSERT_EQ(r.exit_status, 0) << r.err;
+    const std::string written = read_text(out);
+    EXPECT_TRUE(written == alone_a || written == alone_b) << "round " << round << ": a mixed or cut file";
+    for (const auto& entry : std::filesystem::directory_iterator(path(""))) {
+      EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+    }
+  }
 }
 
 TEST(CommandLine, UsageErrorsExitWithTwo) {
