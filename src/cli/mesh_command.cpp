@@ -1,5 +1,8 @@
 #include "cli/mesh_command.h"
 
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -160,10 +163,18 @@ ShapeMesh mesh_shape_input(const MeshCommand& command, OutputFormat format, Qual
   ShapeMeshOptions options = command.shape;
   options.templates = command.options;
   if (command.progress) options.progress = progress_printer(err);
-  if (!command.faces.empty()) options.faces = parse_face_list(command.faces);
   options.corners = parse_corner_specs(command.corners);
   const ReadShape read = read_shape_isolated(command.input, command.read);
   const TopoDS_Shape& shape = read.shape;
+  if (!command.faces.empty()) {
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(shape, TopAbs_FACE, faces);
+    try {
+      options.faces = parse_face_list(command.faces, faces.Extent());
+    } catch (const InputError& e) {
+      throw InputError(command.input + ": " + e.what());
+    }
+  }
   for (int f : read.invalid_faces) options.damaged_faces[f] = kInvalidFaceReason;
   try {
     result = mesh_shape(shape, options);

@@ -26,16 +26,24 @@ std::vector<std::string> split(const std::string& text, char separator) {
 
 }  // namespace
 
-std::vector<int> parse_face_list(const std::string& text) {
+std::vector<int> parse_face_list(const std::string& text, int face_count) {
   std::vector<int> faces;
+  // Checked against the shape before a range is expanded (0-999999999 would fill memory).
+  const auto existing = [&](int f) {
+    if (f >= face_count) {
+      throw InputError("--faces: face " + std::to_string(f) + " does not exist; the shape has faces 0.." +
+                       std::to_string(face_count - 1));
+    }
+    return f;
+  };
   for (const std::string& item : split(text, ',')) {
     const auto dash = item.find('-');
     if (dash == std::string::npos) {
-      faces.push_back(parse_index(item, "--faces"));
+      faces.push_back(existing(parse_index(item, "--faces")));
       continue;
     }
-    const int first = parse_index(item.substr(0, dash), "--faces");
-    const int last = parse_index(item.substr(dash + 1), "--faces");
+    const int first = existing(parse_index(item.substr(0, dash), "--faces"));
+    const int last = existing(parse_index(item.substr(dash + 1), "--faces"));
     if (last < first) throw InputError("--faces: range '" + item + "' runs backwards");
     for (int f = first; f <= last; ++f) faces.push_back(f);
   }

@@ -1,7 +1,9 @@
 #include "core/boundary_loop.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
+#include <tuple>
 
 #include "core/input_error.h"
 #include "core/planar_self_intersection.h"
@@ -64,8 +66,27 @@ std::vector<int> check_corners(const BoundaryLoop& loop) {
 void check_points(const BoundaryLoop& loop) {
   const int n = static_cast<int>(loop.points.size());
   for (int i = 0; i < n; ++i) {
-    if (!is_finite(loop.points[i])) {
+    const Vec3& p = loop.points[i];
+    if (!is_finite(p)) {
       throw InputError("point " + std::to_string(i) + " has a coordinate that is NaN or infinite");
+    }
+    if (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > kMaxCoordinate) {
+      throw InputError("point " + std::to_string(i) + " has a coordinate beyond 1e12 in magnitude: the products " +
+                       "the geometry takes would overflow");
+    }
+  }
+  // Two boundary points at one place: the loop touches itself (in 3D the planar
+  // crossing check below does not see it, and the mesh would have coincident nodes).
+  std::vector<int> order(n);
+  for (int i = 0; i < n; ++i) order[i] = i;
+  const auto key = [&](int i) { return std::tie(loop.points[i].x, loop.points[i].y, loop.points[i].z); };
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
+  for (int k = 1; k < n; ++k) {
+    if (key(order[k]) == key(order[k - 1])) {
+      const int a = std::min(order[k], order[k - 1]), b = std::max(order[k], order[k - 1]);
+      if (b == a + 1 || (a == 0 && b == n - 1)) continue;  // a zero-length segment: named below
+      throw InputError("points " + std::to_string(a) + " and " + std::to_string(b) +
+                       " coincide: the boundary touches itself");
     }
   }
   for (int i = 0; i < n; ++i) {

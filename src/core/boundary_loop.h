@@ -9,6 +9,10 @@
 
 namespace tquad {
 
+// Coordinates beyond this magnitude are refused: squares and cross products of them
+// stay far inside double's range.
+constexpr double kMaxCoordinate = 1e12;
+
 struct BoundaryLoop {
   std::vector<Vec3> points;
   std::vector<int> corners;

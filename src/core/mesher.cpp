@@ -1,5 +1,7 @@
 #include "core/mesher.h"
 
+#include "core/count_fitting.h"
+
 #include <stdexcept>
 #include <string>
 
@@ -61,8 +63,8 @@ TemplateOptions template_options(const MeshOptions& options) {
     throw InputError("T4 ratio k must be at least 2 (paper, section 3), got " +
                      std::to_string(options.t4_ratio));
   }
-  if (options.t5_cut_edges < 0) {
-    throw InputError("T5 cut edges must be 0 (automatic) or positive, got " +
+  if (options.t5_cut_edges < 0 || options.t5_cut_edges > kMaxCurveSegments) {
+    throw InputError("T5 cut edges must be 0 (automatic) or from 1 to 1e8, got " +
                      std::to_string(options.t5_cut_edges));
   }
   TemplateOptions t;

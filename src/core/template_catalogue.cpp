@@ -43,7 +43,8 @@ TemplateChoice select_three_curves(const CurveCounts& n, const TemplateOptions& 
   const int c = n[shortest];
   const int a = n[(shortest + 1) % 3];
   const int b = n[(shortest + 2) % 3];
-  if (options.t4_ratio * c <= a && options.t4_ratio * c <= b) {
+  const long long kc = static_cast<long long>(options.t4_ratio) * c;  // k and C are each under 2^31
+  if (kc <= a && kc <= b) {
     return {TemplateKind::T4, (shortest + 1) % 3};  // canonical s2 is the short curve
   }
   const auto lines = trimap_lines(n);

@@ -47,6 +47,11 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
   const std::string name = "face " + std::to_string(f);
   std::optional<FaceMeshResult> best;
   std::string refusal;
+  bool refusal_internal = false;  // the last refusal is the mesher's failure, not the input's
+  const auto note_refusal = [&](const std::exception& e) {
+    refusal = e.what();
+    refusal_internal = dynamic_cast<const InputError*>(&e) == nullptr;
+  };
   const bool pole = boundary.has_degenerate_edge || boundary.polar;
   if (boundary.inner_wires > 0 && pole) throw InputError(name + " has a hole and a pole; not supported yet");
   bool decompose = !pole;
@@ -58,7 +63,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
       if (auto ring = mesh_face_ring(index.face(f), f, boundary, nodes, index.vertex_count())) keep(std::move(*ring));
       keep(mesh_face_o_grid(index.face(f), f, boundary, nodes, index.vertex_count(), size, options.templates));
     } catch (const std::exception& e) {  // the decomposition below is the other route
-      refusal = e.what();
+      note_refusal(e);
     }
   } else if (boundary.inner_wires == 0) {
     const auto requested = options.corners.find(f);
@@ -68,7 +73,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
       try {
         keep(mesh_face(index, f, boundary, corners, nodes, options.templates));
       } catch (const std::exception& e) {  // an internal failure of one route is noted; others follow
-        refusal = e.what();
+        note_refusal(e);
       }
     }
     decompose = decompose && !user_corners;  // the user's corners are an instruction
@@ -76,7 +81,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
       try {
         if (auto disk = mesh_polar_disk(index.face(f), boundary, nodes, options.templates)) keep(std::move(*disk));
       } catch (const std::exception& e) {  // the corner routes stand
-        if (!best) refusal = e.what();
+        if (!best) note_refusal(e);
       }
     }
     // A disk's O-grid (a square and four patches around it) beats corners on a smooth
@@ -87,7 +92,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
           keep(std::move(*disk));
         }
       } catch (const std::exception& e) {  // the other routes stand
-        if (!best) refusal = e.what();
+        if (!best) note_refusal(e);
       }
     }
   }
@@ -95,10 +100,13 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     try {
       keep(mesh_face_decomposed(index.face(f), f, boundary, nodes, index.vertex_count(), size, options.templates));
     } catch (const std::exception& e) {  // a mesh already found stays
-      if (!best) refusal = e.what();
+      if (!best) note_refusal(e);
     }
   }
-  if (!best) throw InputError(refusal);
+  if (!best) {
+    if (refusal_internal) throw std::runtime_error(refusal);
+    throw InputError(refusal);
+  }
   if (options.smooth) {
     const bool seam = std::find(boundary.is_seam.begin(), boundary.is_seam.end(), 1) != boundary.is_seam.end();
     smooth_face_mesh(index.face(f), seam, nodes, *best);
@@ -131,12 +139,18 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
     outcome.finer_edges_may_help = e.quads <= kRefinableQuads;
   } catch (const InputError& e) {
     outcome.reason = e.what();
+  } catch (const std::bad_alloc&) {
+    outcome.reason = std::string("face ") + std::to_string(f) + ": internal failure: out of memory";
+    outcome.internal = true;
   } catch (const std::exception& e) {
     outcome.reason = std::string("face ") + std::to_string(f) + ": internal failure: " + e.what();
-  } catch (const Standard_Failure& e) {  // OpenCASCADE's, which is no std::exception
-    outcome.reason = std::string("face ") + std::to_string(f) + ": OpenCASCADE failure: " + e.GetMessageString();
+    outcome.internal = true;
+  } catch (const Standard_Failure& e) {  // OpenCASCADE's on the face's geometry; no std::exception
+    outcome.reason = std::string("face ") + std::to_string(f) + ": OpenCASCADE failure: " + e.GetMessageString() +
+                     " (a damaged face?)";
   } catch (...) {
     outcome.reason = std::string("face ") + std::to_string(f) + ": internal failure";
+    outcome.internal = true;
   }
   return outcome;
 }

@@ -18,6 +18,9 @@ struct FaceOutcome {
   bool ok = false;
   // Refused for quads that stay inverted on a small mesh: finer edges may help.
   bool finer_edges_may_help = false;
+  // Refused for a failure of the mesher itself (a broken invariant, out of memory),
+  // not of the input: exit 1, not 2, when it stops the job.
+  bool internal = false;
   std::string reason;
   FaceBoundary boundary;
   FaceMeshResult mesh;

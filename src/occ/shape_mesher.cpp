@@ -14,6 +14,7 @@
 #include <exception>
 #include <optional>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 
 #include "core/input_error.h"
@@ -287,10 +288,14 @@ class ShapeMeshContext {
     }
     if (!mesh.refused_faces.empty() && !options_.keep_going) {
       std::string text = std::to_string(mesh.refused_faces.size()) + " face(s) refused: ";
+      bool internal = false;
       for (std::size_t i = 0; i < mesh.refused_faces.size(); ++i) {
         text += (i ? "; " : "") + mesh.refused_faces[i].reason;
+        internal = internal || outcomes_[mesh.refused_faces[i].face].internal;
       }
-      throw InputError(text + " (--keep-going meshes the other faces)");
+      text += " (--keep-going meshes the other faces)";
+      if (internal) throw std::runtime_error(text);  // the mesher's fault: exit 1
+      throw InputError(text);
     }
     if (!mesh.refused_faces.empty() &&
         static_cast<std::size_t>(std::count(meshed_.begin(), meshed_.end(), 1)) == mesh.refused_faces.size()) {

@@ -12,6 +12,7 @@
 
 #include "core/input_error.h"
 #include "core/mesher.h"
+#include "core/mesh_validation.h"
 #include "core/planar_self_intersection.h"
 #include "core/quality.h"
 #include "core/shape_mesh.h"
@@ -106,6 +107,9 @@ py::dict mesh_boundary_binding(const py::array_t<double, py::array::c_style | py
   {
     py::gil_scoped_release release;
     mesh = mesh_boundary(loop, template_options(t4_ratio, t5_cut_edges, max_quads));
+    // The CLI's final check, the same for every front end.
+    const std::string problem = check_disk_mesh(mesh, static_cast<int>(loop.points.size()));
+    if (!problem.empty()) throw std::logic_error("the mesh is invalid: " + problem);
     Vec3 normal;
     const bool planar = planar_normal(loop.points, normal);
     quality = summarize_quality(mesh, planar ? std::optional<Vec3>(normal) : std::nullopt);

@@ -237,6 +237,30 @@ TEST_F(BadInput, FailedRunLeavesAnExistingOutputUntouched) {
   EXPECT_EQ(read_text(path("out.json")), "previous content");
 }
 
+TEST_F(BadInput, CoordinatesTooLargeForTheGeometry) {
+  // Scaled by 1e300 the points are finite, but their products overflow: refused as
+  // such (it was reported as "lies on a line").
+  std::vector<int> corners;
+  std::vector<Vec3> points = square({4, 4, 4, 4}, corners);
+  for (Vec3& p : points) p = 1e300 * p;
+  expect_refused(boundary_file("huge.json", points, corners), {}, {"point 1", "beyond 1e12"});
+}
+
+TEST_F(BadInput, ANonPlanarLoopThatTouchesItself) {
+  // A square of 16 points bent out of plane, its point 10 moved onto point 2.
+  std::vector<int> corners;
+  std::vector<Vec3> points = square({4, 4, 4, 4}, corners);
+  for (std::size_t i = 0; i < points.size(); ++i) points[i].z = 0.1 * (i % 3);
+  points[10] = points[2];
+  expect_refused(boundary_file("touching.json", points, corners), {}, {"points 2 and 10 coincide"});
+}
+
+TEST_F(BadInput, T5CutEdgesAboveTheCountLimit) {
+  std::vector<int> corners;
+  const std::string file = boundary_file("ok.json", square({4, 4, 4, 4}, corners), corners);
+  expect_refused(file, {"--t5-cut-edges", "2000000000"}, {"T5 cut edges", "1e8"});
+}
+
 TEST_F(BadInput, TwoRunsWritingOneOutputAtOnceLeaveOneCompleteFile) {
   // Each run writes its own temporary file and renames it: the output is one run's
   // complete file, never a mix, and no temporary file is left.

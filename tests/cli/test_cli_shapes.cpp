@@ -391,6 +391,9 @@ TEST_F(ShapeCli, FacesRange) {
 
 TEST_F(ShapeCli, FacesOutOfRangeIsRefused) {
   expect_refused(shape_file("plate_with_hole.brep"), {"--faces", "99"}, {"face 99", "plate_with_hole.brep"});
+  // Bounded by the shape before the range is expanded (it once took 4 GB).
+  expect_refused(shape_file("plate_with_hole.brep"), {"--faces", "0-999999999"},
+                 {"face 999999999 does not exist", "faces 0..3"});
 }
 
 TEST_F(ShapeCli, FacesNotAnIndexIsRefused) {

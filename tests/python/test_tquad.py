@@ -95,6 +95,9 @@ class MeshShapeTest(unittest.TestCase):
             tquad.mesh_shape(path, faces=[9])
         with self.assertRaisesRegex(ValueError, "cannot open"):
             tquad.mesh_shape(os.path.join(SHAPES, "absent.step"))
+        for bad in (float("nan"), float("inf"), -1.0):
+            with self.assertRaisesRegex(ValueError, "size must be a finite positive number"):
+                tquad.mesh_shape(path, size=bad)
         with tempfile.TemporaryDirectory() as folder:
             garbage = os.path.join(folder, "garbage.brep")
             with open(garbage, "w") as f:
