@@ -28,6 +28,8 @@ packages=(
   python3-meshio gmsh python3-gmsh calculix-ccx
   # figures: meshes drawn to PNG (tools/draw_mesh.py)
   python3-matplotlib
+  # fuzzing: libFuzzer targets built with clang (scripts/fuzz.sh)
+  clang libclang-rt-14-dev
 )
 for arg in "$@"; do
   case "$arg" in
