@@ -10,10 +10,10 @@ runs=${1:-1000000}
 build="$repo_dir/build-fuzz"
 cmake -S "$repo_dir" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
   -DTQUAD_FUZZ=ON -DTQUAD_BUILD_TESTS=OFF > /dev/null
-cmake --build "$build" --target fuzz_boundary
+cmake --build "$build" --target fuzz_boundary fuzz_domain
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-for target in fuzz_boundary; do
+for target in fuzz_boundary fuzz_domain; do
   mkdir -p "$build/corpus/$target"
   "$build/bin/$target" -runs="$runs" -timeout=10 -rss_limit_mb=4096 -max_len=65536 -print_final_stats=1 \
     "$build/corpus/$target" "$repo_dir/fuzz/corpus/$target"
