@@ -2,6 +2,7 @@
 # Builds the libFuzzer targets with clang, AddressSanitizer and UndefinedBehaviorSanitizer
 # into build-fuzz/ and runs each for RUNS executions (default 1,000,000) from its seed
 # corpus in fuzz/corpus/<target> (the corpus grows in build-fuzz/corpus/<target>).
+# The random seed is fixed (1), so a run from a fresh clone, as in CI, is repeatable.
 #
 #   scripts/fuzz.sh [RUNS]
 set -euo pipefail
@@ -15,6 +16,6 @@ export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 for target in fuzz_boundary fuzz_domain; do
   mkdir -p "$build/corpus/$target"
-  "$build/bin/$target" -runs="$runs" -timeout=10 -rss_limit_mb=4096 -max_len=65536 -print_final_stats=1 \
+  "$build/bin/$target" -runs="$runs" -seed=1 -timeout=10 -rss_limit_mb=4096 -max_len=65536 -print_final_stats=1 \
     "$build/corpus/$target" "$repo_dir/fuzz/corpus/$target"
 done
