@@ -175,4 +175,20 @@ GeneratedDomain generated_domain(int index) {
   return out;
 }
 
+std::vector<int> loop_sizes(const PlanarDomain& domain) {
+  std::vector<int> sizes;
+  for (const DomainLoop& l : domain.loops) sizes.push_back(static_cast<int>(l.points.size()));
+  return sizes;
+}
+
+DomainLoop circle_hole(Vec3 centre, double radius, int n) {
+  DomainLoop loop;
+  for (int k = 0; k < n; ++k) {
+    const double t = -2 * M_PI * k / n;
+    loop.points.push_back({centre.x + radius * std::cos(t), centre.y + radius * std::sin(t), 0});
+  }
+  loop.vertex.assign(n, 0);
+  return loop;
+}
+
 }  // namespace tquad::testing

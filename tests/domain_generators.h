@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/planar_domain.h"
 
@@ -19,5 +20,11 @@ struct GeneratedDomain {
 
 // The i-th domain of a reproducible family.
 GeneratedDomain generated_domain(int index);
+
+// Each loop's point count, as check_domain_mesh takes them.
+std::vector<int> loop_sizes(const PlanarDomain& domain);
+
+// A circle of n points around `centre`, clockwise (a hole), no CAD vertex.
+DomainLoop circle_hole(Vec3 centre, double radius, int n);
 
 }  // namespace tquad::testing

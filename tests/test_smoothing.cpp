@@ -19,13 +19,10 @@
 namespace tquad {
 namespace {
 
-const Vec3 kUp{0, 0, 1};
+using testing::circle_hole;
+using testing::loop_sizes;
 
-std::vector<int> loop_sizes(const PlanarDomain& d) {
-  std::vector<int> sizes;
-  for (const DomainLoop& l : d.loops) sizes.push_back(static_cast<int>(l.points.size()));
-  return sizes;
-}
+const Vec3 kUp{0, 0, 1};
 
 DomainLoop square_loop(double x0, double y0, double x1, double y1, int per_side) {
   DomainLoop loop;
@@ -36,16 +33,6 @@ DomainLoop square_loop(double x0, double y0, double x1, double y1, int per_side)
       loop.vertex.push_back(k == 0);
     }
   }
-  return loop;
-}
-
-DomainLoop circle_hole(Vec3 centre, double r, int n) {
-  DomainLoop loop;
-  for (int k = 0; k < n; ++k) {
-    const double t = -2 * M_PI * k / n;  // clockwise
-    loop.points.push_back({centre.x + r * std::cos(t), centre.y + r * std::sin(t), 0});
-  }
-  loop.vertex.assign(n, 0);
   return loop;
 }
 

@@ -92,13 +92,12 @@ bool ring_quads_fit(const std::vector<Vec3>& inside, const std::vector<Vec3>& ou
 }
 
 // How many rings hole `loop` takes (0 to `layers`).
-int rings_that_fit(const PlanarDomain& domain, const PointGrid& grid, int loop, int layers, double cell) {
+int rings_that_fit(const PlanarDomain& domain, const PointGrid& grid, int loop, int layers) {
   const std::vector<Vec3>& rim = domain.loops[loop].points;
   const double spacing = largest_spacing(rim);
   for (int count = layers; count > 0; --count) {
     // Room for this hole's rings, a neighbour's as many, and one more ring between.
-    const double clearance = (2 * count + 1) * spacing;
-    if (clearance > cell) continue;
+    const double clearance = (2 * count + 1) * spacing;  // at most `cell`, by its choice
     bool fits = true;
     std::vector<Vec3> inside = rim;
     for (int layer = 1; layer <= count && fits; ++layer) {
@@ -139,7 +138,7 @@ RingedDomain ring_holes(const PlanarDomain& domain, int layers) {
   for (int l = 1; l < domain.loop_count(); ++l) {
     const DomainLoop& hole = domain.loops[l];
     const int n = static_cast<int>(hole.points.size());
-    const int count = rings_that_fit(domain, grid, l, layers, cell);
+    const int count = rings_that_fit(domain, grid, l, layers);
     std::vector<NodeId> inside(n);
     for (int i = 0; i < n; ++i) inside[i] = domain.offset(l) + i;
     DomainLoop outermost = hole;
