@@ -3,18 +3,22 @@
 # into build-fuzz/ and runs each for RUNS executions (default 1,000,000) from its seed
 # corpus in fuzz/corpus/<target> (the corpus grows in build-fuzz/corpus/<target>).
 # The random seed is fixed (1), so a run from a fresh clone, as in CI, is repeatable.
+# TARGETs default to all four: fuzz_boundary, fuzz_domain, fuzz_brep, fuzz_step.
 #
-#   scripts/fuzz.sh [RUNS]
+#   scripts/fuzz.sh [RUNS [TARGET...]]
 set -euo pipefail
 repo_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 runs=${1:-1000000}
+shift || true
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_boundary fuzz_domain fuzz_brep fuzz_step)
 build="$repo_dir/build-fuzz"
 cmake -S "$repo_dir" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
   -DTQUAD_FUZZ=ON -DTQUAD_BUILD_TESTS=OFF > /dev/null
-cmake --build "$build" --target fuzz_boundary fuzz_domain
+cmake --build "$build" --target "${targets[@]}"
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-for target in fuzz_boundary fuzz_domain; do
+for target in "${targets[@]}"; do
   mkdir -p "$build/corpus/$target"
   "$build/bin/$target" -runs="$runs" -seed=1 -timeout=10 -rss_limit_mb=4096 -max_len=65536 -print_final_stats=1 \
     "$build/corpus/$target" "$repo_dir/fuzz/corpus/$target"

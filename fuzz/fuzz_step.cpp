@@ -1,0 +1,60 @@
+// libFuzzer target: STEP files through the isolated reader (isolated_reader.h) and the
+// whole shape pipeline (shape_fuzz_check.h). Each input is written to a fresh
+// temporary .step file, read as `tquad mesh` reads it, and removed.
+#include <STEPControl_Reader.hxx>
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "core/input_error.h"
+#include "shape_fuzz_check.h"
+
+namespace {
+
+// The input as a temporary .step file, removed when this goes out of scope.
+class TemporaryStepFile {
+ public:
+  TemporaryStepFile(const std::uint8_t* data, std::size_t size) {
+    char name[] = "/tmp/tquad-fuzz-XXXXXX.step";
+    const int fd = mkstemps(name, 5);
+    if (fd < 0) std::abort();
+    path_ = name;
+    std::size_t done = 0;
+    while (done < size) {
+      const ssize_t n = ::write(fd, data + done, size - done);
+      if (n <= 0) std::abort();
+      done += static_cast<std::size_t>(n);
+    }
+    close(fd);
+  }
+  ~TemporaryStepFile() { std::remove(path_.c_str()); }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+}  // namespace
+
+// STEP's reader sets up its schema tables on first use, in each child again unless
+// the parent has done it once before forking (ten times fewer runs per second).
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  STEPControl_Reader warm_up;
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const TemporaryStepFile file(data, size);
+  tquad::ReadShape read;
+  try {
+    read = tquad::read_shape_isolated(file.path(), tquad::fuzz::fuzz_read_limits());
+  } catch (const tquad::InputError&) {
+    return 0;
+  }
+  tquad::fuzz::mesh_and_check(read);
+  return 0;
+}
