@@ -29,6 +29,7 @@
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepLib.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
@@ -59,6 +60,7 @@
 #include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
 #include <gp_Ax2.hxx>
+#include <gp_Ax3.hxx>
 #include <gp_Circ.hxx>
 #include <gp_Pln.hxx>
 #include <gp_Pnt.hxx>
@@ -213,6 +215,58 @@ TopoDS_Shape make_bspline_patch() {
   BRepBuilderAPI_MakeFace make_face(fit.Surface(), 1e-7);
   require(make_face.IsDone(), "bspline_patch: face construction failed");
   return make_face.Face();
+}
+
+// ---------------------------------------------------------------------------------
+// 5. Open box: the shell of a 40 x 30 x 20 box without its top face (z = 20); the
+//    top face's four edges are free edges, the others are shared by two faces.
+// ---------------------------------------------------------------------------------
+TopoDS_Shape make_open_box() {
+  BRepPrimAPI_MakeBox box(40.0, 30.0, 20.0);
+  box.Build();
+  require(box.IsDone(), "open_box: box construction failed");
+  BRep_Builder builder;
+  TopoDS_Shell shell;
+  builder.MakeShell(shell);
+  int kept = 0;
+  for (TopExp_Explorer it(box.Shell(), TopAbs_FACE); it.More(); it.Next()) {
+    BRepAdaptor_Surface surface(TopoDS::Face(it.Current()));
+    const gp_Pln plane = surface.Plane();
+    const bool top = plane.Axis().Direction().IsParallel(gp::DZ(), 1e-9) && std::abs(plane.Location().Z() - 20.0) < 1e-9;
+    if (top) continue;
+    builder.Add(shell, it.Current());
+    ++kept;
+  }
+  require(kept == 5, "open_box: the top face was not found exactly once");
+  return shell;
+}
+
+// ---------------------------------------------------------------------------------
+// 6. Three fins: three 40 x 20 planar faces on one edge (0,0,0)-(40,0,0), at 0, 90
+//    and 225 degrees around it, in one shell: the edge is shared by three faces (a
+//    non-manifold shell, as stiffeners on a plate make).
+// ---------------------------------------------------------------------------------
+TopoDS_Shape make_three_fins() {
+  const TopoDS_Vertex a = BRepBuilderAPI_MakeVertex(gp_Pnt(0, 0, 0));
+  const TopoDS_Vertex b = BRepBuilderAPI_MakeVertex(gp_Pnt(40, 0, 0));
+  const TopoDS_Edge spine = BRepBuilderAPI_MakeEdge(a, b);
+  BRep_Builder builder;
+  TopoDS_Shell shell;
+  builder.MakeShell(shell);
+  for (const double degrees : {0.0, 90.0, 225.0}) {
+    const double t = degrees * M_PI / 180.0;
+    const gp_Vec out(0, 20 * std::cos(t), 20 * std::sin(t));
+    const TopoDS_Vertex c = BRepBuilderAPI_MakeVertex(gp_Pnt(40, 0, 0).Translated(out));
+    const TopoDS_Vertex d = BRepBuilderAPI_MakeVertex(gp_Pnt(0, 0, 0).Translated(out));
+    BRepBuilderAPI_MakeWire wire(spine, BRepBuilderAPI_MakeEdge(b, c), BRepBuilderAPI_MakeEdge(c, d),
+                                 BRepBuilderAPI_MakeEdge(d, a));
+    require(wire.IsDone(), "three_fins: wire construction failed");
+    const gp_Pln plane(gp_Ax3(gp_Pnt(0, 0, 0), gp_Dir(gp_Vec(1, 0, 0).Crossed(out)), gp::DX()));
+    BRepBuilderAPI_MakeFace face(plane, wire.Wire());
+    require(face.IsDone(), "three_fins: face construction failed");
+    builder.Add(shell, face.Face());
+  }
+  return shell;
 }
 
 // ---------------------------------------------------------------------------------
@@ -446,6 +500,25 @@ int main(int argc, char** argv) {
       }
       std::cout << "  check: " << (shape_ok ? "passed" : "FAILED") << "\n";
       ok = shape_ok && ok;
+      ok = write_brep(shape, dir / (std::string(s.name) + ".brep")) && ok;
+    }
+    // Open and non-manifold shells: faces valid one by one, edges free or shared by
+    // three faces.
+    struct Shell {
+      const char* name;
+      TopoDS_Shape (*make)();
+      int faces, free_edges;
+    };
+    const Shell shells[] = {{"open_box", make_open_box, 5, 4}, {"three_fins", make_three_fins, 3, 9}};
+    for (const Shell& s : shells) {
+      const TopoDS_Shape shape = s.make();
+      const ShapeSummary summary = describe(s.name, shape);
+      bool faces_ok = int(summary.edges_per_wire.size()) == s.faces && summary.free_edges == s.free_edges;
+      for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) {
+        faces_ok = faces_ok && BRepCheck_Analyzer(it.Current()).IsValid();
+      }
+      std::cout << "  check: " << (faces_ok ? "passed" : "FAILED") << "\n";
+      ok = faces_ok && ok;
       ok = write_brep(shape, dir / (std::string(s.name) + ".brep")) && ok;
     }
     return ok ? 0 : 1;

@@ -1,6 +1,7 @@
 // tquad: the command-line front end. Parses the arguments and runs the job in
 // run_mesh_command; exit status 0 done, 2 wrong input or usage, 1 internal failure.
 #include <climits>
+#include <csignal>
 #include <cmath>
 #include <exception>
 #include <iostream>
@@ -11,6 +12,7 @@
 #include <Message_Messenger.hxx>
 
 #include "cli/mesh_command.h"
+#include "occ/isolated_reader.h"
 
 namespace {
 
@@ -95,7 +97,7 @@ int run_cli(int argc, char** argv) {
                    "CAD input: seconds the reader (a child process) may take before the file\n"
                    "is refused as damaged (default 300)")
       ->type_name("S")
-      ->check(CLI::Range(0.001, 1e6));
+      ->check(CLI::Range(tquad::kMinReadSeconds, tquad::kMaxReadSeconds));
   mesh->add_flag("!--no-smooth", command.shape.smooth,
                  "CAD input: keep the template nodes where they are (no smoothing on the\n"
                  "surface)");
@@ -127,6 +129,10 @@ int main(int argc, char** argv) {
   // tquad reports problems itself, one line each; OpenCASCADE's readers would print
   // their own diagnostics on stdout, which --report json keeps for the report.
   Message::DefaultMessenger()->ChangePrinters().Clear();
+  // Over a file-size limit (ulimit -f) a write would kill the process by SIGXFSZ and
+  // leave the temporary output behind; ignored, the write fails like on a full disk
+  // and the writer removes it (atomic_file_writer.h).
+  std::signal(SIGXFSZ, SIG_IGN);
   try {
     return run_cli(argc, argv);
   } catch (const std::exception& e) {

@@ -19,6 +19,7 @@
 #include "core/planar_self_intersection.h"
 #include "core/quality.h"
 #include "core/shape_mesh.h"
+#include "io/atomic_file_writer.h"
 #include "io/boundary_json_reader.h"
 #include "io/inp_writer.h"
 #include "io/mesh_json_writer.h"
@@ -45,6 +46,11 @@ std::string lower_extension(const std::string& path) {
 enum class InputKind { boundary, shape };
 
 InputKind input_kind(const std::string& path) {
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    throw InputError("'" + path + "' is not a regular file");
+  }
   if (lower_extension(path) == ".json") return InputKind::boundary;
   if (is_shape_path(path)) return InputKind::shape;
   throw InputError(path + ": unknown input format '" + lower_extension(path) +
@@ -191,6 +197,7 @@ ShapeMesh mesh_shape_input(const MeshCommand& command, OutputFormat format, Qual
 int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
   const InputKind kind = input_kind(command.input);
   const OutputFormat format = output_format(command.output);  // before the work
+  check_output_location(command.output);
   std::error_code ec;
   if (std::filesystem::equivalent(command.input, command.output, ec)) {
     throw InputError(command.output + ": the output file is the input file");

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <cstdio>
+
 #include "core/input_error.h"
 
 namespace tquad {
@@ -19,7 +21,9 @@ constexpr double kMaxCurveSegments = 1e8;
 // segments under kMaxCurveSegments.
 inline void check_goal(double goal, const std::string& what) {
   if (!(goal > 0) || !(goal <= kMaxCurveSegments)) {
-    throw InputError(what + " would need " + std::to_string(goal) + " segments; the size is too small for it");
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", goal);
+    throw InputError(what + " would need " + text + " segments, over the limit of 1e8; the size is too small for it");
   }
 }
 

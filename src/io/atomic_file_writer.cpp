@@ -51,12 +51,16 @@ void write_file_atomically(const std::string& path, const std::function<void(std
       throw;
     }
     out.flush();
+    const bool written = static_cast<bool>(out);
+    const int write_error = errno;
     out.close();
-    if (!out) {
-      const int error = errno;
+    if (!written || !out) {
+      const int error = written ? errno : write_error;
       remove_quietly(temporary);
-      throw InputError("cannot write " + temporary + ": " +
-                       (error != 0 ? std::strerror(error) : "write failed"));
+      // A full disk (ENOSPC) or a file-size limit (EFBIG; main ignores SIGXFSZ so the
+      // write fails instead of killing the process) ends here.
+      throw InputError("cannot write " + path + ": " + (error != 0 ? std::strerror(error) : "write failed") +
+                       "; nothing was written");
     }
   }
   std::error_code ec;
@@ -65,6 +69,21 @@ void write_file_atomically(const std::string& path, const std::function<void(std
     remove_quietly(temporary);
     throw InputError("cannot rename " + temporary + " to " + path + ": " + ec.message());
   }
+}
+
+void check_output_location(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (fs::exists(status) && !fs::is_regular_file(status)) {
+    throw InputError(path + " exists and is not a regular file; give a file name to write");
+  }
+  const fs::path folder = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
+  if (!fs::is_directory(folder, ec)) throw InputError("cannot write " + path + ": no folder " + folder.string());
+  // The one sure test of a location (permissions do not stop root; /proc and
+  // read-only file systems do): create the temporary file the writer would, and
+  // remove it.
+  remove_quietly(unique_temporary(path));
 }
 
 }  // namespace tquad

@@ -17,4 +17,10 @@ namespace tquad {
 // removed on every failure.
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
+// Throws InputError when PATH cannot be an output, before any work is done: it exists
+// and is not a regular file (a directory, or a device such as /dev/null that the
+// final rename would replace), or its folder is missing or not writable (a read-only
+// file system, or no permission).
+void check_output_location(const std::string& path);
+
 }  // namespace tquad

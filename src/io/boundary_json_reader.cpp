@@ -91,6 +91,7 @@ int read_corner(const json& value, std::size_t index, const std::string& source)
 }  // namespace
 
 BoundaryLoop parse_boundary_json(const std::string& text, const std::string& source) {
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) fail(source, "the file is empty");
   json root;
   try {
     root = json::parse(text);

@@ -173,6 +173,7 @@ ReadShape read_shape_isolated(const std::string& path, const ReadLimits& limits)
     throw InputError("'" + path + "' is " + std::to_string(info.st_size) + " bytes, over the limit of " +
                      std::to_string(limits.file_bytes));
   }
+  if (info.st_size == 0 && is_shape_path(path)) throw InputError("'" + path + "' is empty");
   if (!is_shape_path(path)) return {read_shape(path), {}};  // names the unknown format
   return read_in_child([&] { return read_shape(path); }, "'" + path + "'", limits);
 }

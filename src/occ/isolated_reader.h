@@ -18,6 +18,11 @@
 
 namespace tquad {
 
+// The range a caller may give ReadLimits::seconds (the CLI's --read-timeout, Python's
+// read_timeout).
+inline constexpr double kMinReadSeconds = 0.001;
+inline constexpr double kMaxReadSeconds = 1e6;
+
 struct ReadLimits {
   double seconds = 300;                          // wall time for reading
   unsigned long long memory_bytes = 16ULL << 30;  // address space of the reader

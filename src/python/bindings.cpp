@@ -125,7 +125,8 @@ bool looks_like_brep_text(const std::string& s) {
 py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, const std::vector<int>& faces,
                             const std::map<int, std::vector<int>>& corners, bool keep_going,
                             bool allow_inverted, int threads, int t4_ratio, int t5_cut_edges,
-                            long long max_quads, bool smooth, const py::object& progress) {
+                            long long max_quads, bool smooth, const py::object& progress,
+                            double read_timeout) {
   ShapeMeshOptions options;
   options.smooth = smooth;
   // The Python progress callable runs with the GIL, one call at a time; returning
@@ -156,13 +157,18 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
   if (!(size >= 0) || !std::isfinite(size)) {
     throw InputError("size must be a finite positive number (or 0 for the default), not " + std::to_string(size));
   }
+  if (!(read_timeout >= kMinReadSeconds && read_timeout <= kMaxReadSeconds)) {
+    throw InputError("read_timeout must be between 0.001 and 1e6 seconds, not " + std::to_string(read_timeout));
+  }
+  ReadLimits limits;
+  limits.seconds = read_timeout;
   ShapeMeshResult result;
   QualitySummary quality;
   {
     py::gil_scoped_release release;
     // Read in a child process: a damaged file must not take FreeCAD down.
-    const ReadShape read = looks_like_brep_text(brep_text_or_path) ? read_brep_text_isolated(brep_text_or_path)
-                                                                   : read_shape_isolated(brep_text_or_path);
+    const ReadShape read = looks_like_brep_text(brep_text_or_path) ? read_brep_text_isolated(brep_text_or_path, limits)
+                                                                   : read_shape_isolated(brep_text_or_path, limits);
     const TopoDS_Shape& shape = read.shape;
     for (int f : read.invalid_faces) options.damaged_faces[f] = kInvalidFaceReason;
     try {
@@ -206,5 +212,5 @@ PYBIND11_MODULE(_core, m) {
   m.def("mesh_shape", &tquad::mesh_shape_binding, py::arg("brep_text_or_path"), py::arg("size"),
         py::arg("faces"), py::arg("corners"), py::arg("keep_going"), py::arg("allow_inverted"),
         py::arg("threads"), py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("smooth"),
-        py::arg("progress"));
+        py::arg("progress"), py::arg("read_timeout"));
 }

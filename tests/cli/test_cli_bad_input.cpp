@@ -95,7 +95,7 @@ TEST_F(BadInput, JsonSyntaxError) {
 TEST_F(BadInput, EmptyFile) {
   const std::string file = path("empty.json");
   write_text(file, "");
-  expect_refused(file, {}, {file, "invalid JSON"});
+  expect_refused(file, {}, {file, "the file is empty"});
 }
 
 TEST_F(BadInput, MissingFile) {

@@ -28,9 +28,11 @@ def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]]
         keep_going: mesh the other faces when one is refused.
         name: the object name (FreeCAD appends a number when it is taken).
         faces: FreeCAD face names ("Face1", ...) to mesh; None meshes all faces.
-        raise_on_error: raise when the mesh fails (the object stays in the document,
-            empty and marked invalid); False leaves the caller to look at
-            ``obj.Proxy.last_error`` (the GUI command does, to open the task panel).
+        raise_on_error: raise when the mesh fails, after removing the new object, so
+            a failed call leaves the document as it was (the reason is in the report
+            view too); False keeps the object, empty and marked invalid, for the caller
+            to look at ``obj.Proxy.last_error`` (the GUI command does, to open the task
+            panel).
 
     Raises:
         ValueError: meshing failed and raise_on_error is set; the message says why.
@@ -47,6 +49,9 @@ def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]]
         from .view_provider import ViewProviderTemplateQuadMesh
         ViewProviderTemplateQuadMesh(obj.ViewObject)
     doc.recompute()
-    if raise_on_error and obj.Proxy.last_error:
-        raise ValueError(obj.Proxy.last_error)
+    error = obj.Proxy.last_error
+    if raise_on_error and error:
+        doc.removeObject(obj.Name)
+        doc.recompute()
+        raise ValueError(error)
     return obj

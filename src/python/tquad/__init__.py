@@ -101,7 +101,8 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
                keep_going: bool = False, allow_inverted: bool = False, threads: int = 0,
                t4_ratio: int = 2, t5_cut_edges: int = 0,
                max_quads: int = _MAX_QUADS, smooth: bool = True,
-               progress: Optional[Callable[[str, int, int], Optional[bool]]] = None) -> Mesh:
+               progress: Optional[Callable[[str, int, int], Optional[bool]]] = None,
+               read_timeout: float = 300.0) -> Mesh:
     """Mesh the faces of a CAD shape, conforming across shared edges.
 
     Args:
@@ -121,6 +122,9 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
         progress: called as ``progress(stage, done, total)`` at each stage
             ("index", "assign intervals", "discretize edges", "mesh faces",
             "assemble") and after each face; returning True (or raising) cancels.
+        read_timeout: seconds the reader (a child process, so that a damaged file
+            cannot take the interpreter down) may take before the input is refused
+            as damaged.
 
     Raises:
         Cancelled: the progress callback asked to stop (nothing is returned).
@@ -132,4 +136,4 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
     return Mesh(_core.mesh_shape(str(brep_text_or_path), float(size), face_list, corner_map,
                                  bool(keep_going), bool(allow_inverted), int(threads),
                                  int(t4_ratio), int(t5_cut_edges), int(max_quads), bool(smooth),
-                                 progress))
+                                 progress, float(read_timeout)))

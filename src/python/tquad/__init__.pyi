@@ -27,5 +27,6 @@ def mesh_boundary(points: Union[np.ndarray, Sequence[Sequence[float]]], corners:
 def mesh_shape(brep_text_or_path: str, *, size: float = ..., faces: Optional[Iterable[int]] = ...,
                corners: Optional[Mapping[int, Sequence[int]]] = ..., keep_going: bool = ...,
                allow_inverted: bool = ..., threads: int = ..., t4_ratio: int = ...,
-               t5_cut_edges: int = ..., max_quads: int = ...,
-               progress: Optional[Callable[[str, int, int], Optional[bool]]] = ...) -> Mesh: ...
+               t5_cut_edges: int = ..., max_quads: int = ..., smooth: bool = ...,
+               progress: Optional[Callable[[str, int, int], Optional[bool]]] = ...,
+               read_timeout: float = ...) -> Mesh: ...
