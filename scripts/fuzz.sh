@@ -18,8 +18,10 @@ cmake -S "$repo_dir" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCM
 cmake --build "$build" --target "${targets[@]}"
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+mkdir -p "$build/artifacts"
 for target in "${targets[@]}"; do
   mkdir -p "$build/corpus/$target"
   "$build/bin/$target" -runs="$runs" -seed=1 -timeout=10 -rss_limit_mb=4096 -max_len=65536 -print_final_stats=1 \
+    -artifact_prefix="$build/artifacts/$target-" \
     "$build/corpus/$target" "$repo_dir/fuzz/corpus/$target"
 done

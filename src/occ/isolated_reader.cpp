@@ -53,6 +53,10 @@ bool write_all(int fd, const std::string& bytes) {
 
 // The child: reads, and writes 'S' + binary BREP or 'E' + message to fd; never returns.
 [[noreturn]] void run_reader(int fd, const std::function<TopoDS_Shape()>& read, const ReadLimits& limits) {
+  // A crash here is only this child's death, reported by the parent: the handlers
+  // the caller installed (FreeCAD's turn SIGSEGV into a C++ exception; a fuzzer's
+  // write a crash report) must not run on the reader's state.
+  for (const int fatal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) signal(fatal, SIG_DFL);
   // OpenCASCADE's readers print their complaints; the caller's stdout (a JSON report)
   // and stderr (one line per error) are not theirs.
   const int devnull = open("/dev/null", O_WRONLY);
