@@ -271,5 +271,78 @@ class MeshObjectTest(unittest.TestCase):
         self.assertEqual(mesh.FemMesh.FaceCount, count, "re-mesh after reopening")
 
 
+
+class BadInputInFreeCadTest(unittest.TestCase):
+    """Bad shapes and parameters given to the mesh object inside FreeCAD: make_mesh
+    raises ValueError, the document keeps exactly the objects it had (the Part
+    untouched), and the message goes to the report view (FreeCAD.Console.PrintError).
+    Open and non-manifold shells are meshed. The same inputs through the CLI and the
+    module: tests/python/bad_input_matrix.py."""
+
+    SHAPES = os.path.normpath(os.path.join(os.environ.get("TQ_TEST_DIR", "."), os.pardir, os.pardir,
+                                           "resources", "shapes"))
+
+    def setUp(self):
+        self.doc = FreeCAD.newDocument("TemplateQuadBadInput")
+        self.printed = []
+        self._print_error = FreeCAD.Console.PrintError
+        FreeCAD.Console.PrintError = lambda text: self.printed.append(str(text))
+
+    def tearDown(self):
+        FreeCAD.Console.PrintError = self._print_error
+        FreeCAD.closeDocument(self.doc.Name)
+
+    def _part(self, shape, name):
+        obj = self.doc.addObject("Part::Feature", name)
+        obj.Shape = shape
+        self.doc.recompute()
+        return obj
+
+    def _refused(self, part, expect, **options):
+        from freecad.templatequad import make_mesh
+        names = sorted(o.Name for o in self.doc.Objects)
+        shape_before = part.Shape.exportBrepToString()
+        self.printed.clear()
+        with self.assertRaises(ValueError) as caught:
+            make_mesh(self.doc, part, **options)
+        message = str(caught.exception)
+        for text in expect:
+            self.assertIn(text, message)
+        self.assertEqual(sorted(o.Name for o in self.doc.Objects), names, "the document's objects")
+        self.assertEqual(part.Shape.exportBrepToString(), shape_before, "the Part's shape")
+        self.assertTrue(any(message in line for line in self.printed),
+                        f"'{message}' not in the report view: {self.printed}")
+
+    def test_bad_shapes_and_parameters_leave_the_document_as_it_was(self):
+        box = self._part(Part.makeBox(100, 60, 10), "Box")
+        wire = self._part(Part.Wire(Part.makeCircle(10)), "Circle")
+        sphere = self._part(Part.makeSphere(10), "Sphere")  # its one face is refused
+        cases = [
+            ("a Part with no face", wire, ["has no faces to mesh"], {}),
+            ("size 1e-7 on a 100 mm box", box, ["segments", "the size is too small"], {"size": 1e-7}),
+            ("negative size", box, ["size must be"], {"size": -1.0}),
+            ("NaN size", box, ["size must be"], {"size": float("nan")}),
+            ("a face that does not exist", box, ["does not exist"], {"faces": ["Face99"]}),
+            ("a corner vertex that does not exist", box, ["does not exist"], {"corners": ["Face1:Vertex99,Vertex1"]}),
+            ("one corner", box, ["2, 3 or 4 corners"], {"corners": ["Face1:Vertex1"]}),
+            ("every face refused, keep going", sphere, ["no face"], {"keep_going": True}),
+        ]
+        for name, part, expect, options in cases:
+            with self.subTest(name):
+                self._refused(part, expect, **options)
+
+    def test_open_and_non_manifold_shells_are_meshed_like_the_module_meshes_them(self):
+        from freecad.templatequad import make_mesh
+        for name in ("open_box", "three_fins"):
+            with self.subTest(name):
+                path = os.path.join(self.SHAPES, name + ".brep")
+                part = self._part(Part.read(path), name)
+                mesh = make_mesh(self.doc, part, size=4.0)
+                reference = _tquad().mesh_shape(part.Shape.exportBrepToString(), size=4.0)
+                self.assertEqual(mesh.FemMesh.QuadrangleCount, len(reference.quads))
+                self.assertEqual(mesh.FemMesh.NodeCount, len(reference.nodes))
+                self.assertEqual(list(mesh.RefusedFaces), [])
+
+
 if __name__ == "__main__":
     unittest.main()

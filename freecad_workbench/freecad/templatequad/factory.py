@@ -7,6 +7,7 @@
 Works headless (freecadcmd) and in the GUI, where it also attaches the view provider.
 The GUI command calls it; it does not touch the selection, transactions or analyses.
 """
+import math
 from typing import Iterable, Optional
 
 import FreeCAD
@@ -37,6 +38,11 @@ def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]]
     Raises:
         ValueError: meshing failed and raise_on_error is set; the message says why.
     """
+    # FreeCAD's Length property would quietly turn a negative size into another value.
+    if not (math.isfinite(float(size)) and float(size) >= 0):
+        message = f"size must be a finite length of 0 (automatic) or more, not {size}"
+        FreeCAD.Console.PrintError(f"TemplateQuad: {part_obj.Label}: {message}\n")
+        raise ValueError(message)
     obj = doc.addObject("Fem::FemMeshObjectPython", name)
     TemplateQuadMesh(obj)
     obj.Part = part_obj
