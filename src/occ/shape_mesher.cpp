@@ -1,6 +1,8 @@
 #include "occ/shape_mesher.h"
 
 #include <BRepBndLib.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
 #include <Bnd_Box.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
@@ -46,6 +48,27 @@ double shape_diagonal(const TopoDS_Shape& shape) {
     throw InputError(std::string("the shape is ") + text + " units across: its coordinates are absurd (a damaged file?)");
   }
   return diagonal;
+}
+
+// An area estimate may undercount (edges refined for curvature or small faces give
+// more quads than area / size^2): a shape is refused up front only when even this
+// many times the limit is expected; the running total while meshing is exact.
+constexpr double kEstimateOverLimit = 2.0;
+
+// About how many quads the faces take at `size`: each face's area / size^2 (a square
+// grid of that size). A face whose area OpenCASCADE cannot integrate counts 0 here.
+double estimated_quads(const ShapeIndex& index, const std::vector<char>& faces, double size) {
+  double area = 0;
+  for (int f = 0; f < index.face_count(); ++f) {
+    if (!faces[f]) continue;
+    try {
+      GProp_GProps properties;
+      BRepGProp::SurfaceProperties(index.face(f), properties);
+      if (std::isfinite(properties.Mass())) area += std::abs(properties.Mass());
+    } catch (const Standard_Failure&) {
+    }
+  }
+  return area / (size * size);
 }
 
 std::vector<char> meshed_faces(const ShapeIndex& index, const std::vector<int>& faces) {
@@ -212,6 +235,10 @@ class ShapeMeshContext {
     minimum_.assign(index_.edge_count(), 0);
   }
 
+  std::string over_limit_text() const {
+    return ", over the limit of " + std::to_string(options_.templates.max_quads) + " (--max-quads); use a larger --size";
+  }
+
   // Stage "assign intervals": every edge's count (size, curvature, refinement), then
   // every meshed face's total made even. Cuts inside faces get theirs with the face.
   void assign_intervals() {
@@ -233,9 +260,27 @@ class ShapeMeshContext {
       if (to_mesh_[f]) at_least += std::max(0, face_boundary_total(index_, f, segments_) / 2 - 1);
     }
     if (at_least > options_.templates.max_quads) {
-      throw InputError("the edge counts alone give at least " + std::to_string(at_least) +
-                       " quads, over the limit of " + std::to_string(options_.templates.max_quads) +
-                       " (--max-quads); use a larger --size");
+      throw InputError("the edge counts alone give at least " + std::to_string(at_least) + " quads" +
+                       over_limit_text());
+    }
+    // And at most about sum(E^2) / (4 pi) (a face of perimeter P has at most the area
+    // P^2 / (4 pi) of a disk): when that is well under the limit, as in any ordinary
+    // run, the faces' areas (a surface integral each, a fifth of the run's time on
+    // U_Joint_2.stp) need not be computed.
+    double at_most = 0;
+    for (int f = 0; f < index_.face_count(); ++f) {
+      if (!to_mesh_[f]) continue;
+      const double e = face_boundary_total(index_, f, segments_);
+      at_most += e * e / (4 * M_PI);
+    }
+    const double refused_above = kEstimateOverLimit * static_cast<double>(options_.templates.max_quads);
+    if (at_most > refused_above) {
+      const double estimate = estimated_quads(index_, to_mesh_, result_.size);
+      if (estimate > refused_above) {
+        char text[96];
+        std::snprintf(text, sizeof text, "the faces' area at size %.3g gives about %.3g quads", result_.size, estimate);
+        throw InputError(text + over_limit_text());
+      }
     }
   }
 
@@ -252,18 +297,27 @@ class ShapeMeshContext {
     outcomes_.assign(index_.face_count(), FaceOutcome{});
     const int total = static_cast<int>(std::count(meshed_.begin(), meshed_.end(), 1));
     int done = 0;  // counted under the progress lock, so reports never go backwards
+    // Each face keeps under the limit by itself; the faces together are counted as
+    // they finish, and the workers stop once their sum is over it.
+    std::atomic<long long> quads{0};
+    const long long limit = options_.templates.max_quads;
     run_parallel(index_.face_count(), options_.threads, [&](int f) {
-      if (!meshed_[f] || cancelled()) return;
+      if (!meshed_[f] || cancelled() || quads.load() > limit) return;
       const auto damaged = damaged_.find(f);
       if (damaged != damaged_.end()) {
         outcomes_[f].reason = "face " + std::to_string(f) + ": " + damaged->second;
       } else {
         outcomes_[f] = mesh_one_face(index_, f, edges_, result_.mesh.nodes, options_, result_.size);
+        if (outcomes_[f].ok) quads += static_cast<long long>(outcomes_[f].mesh.quads.size());
       }
       if (!options_.progress) return;
       const std::lock_guard<std::mutex> lock(progress_mutex_);
       options_.progress(MeshProgress{"mesh faces", ++done, total});
     });
+    if (quads.load() > limit) {
+      // (How many were meshed before the workers stopped depends on the threads.)
+      throw InputError("the faces together have more quads" + over_limit_text());
+    }
   }
 
   bool refine_edges_of_inverted_faces() {
