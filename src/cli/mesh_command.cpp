@@ -225,6 +225,13 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
   for (const RefusedFace& f : shape.refused_faces) {
     err << "tquad: warning: refused " << one_line(f.reason) << "\n";
   }
+  if (!shape_result.unsewn_edges.empty()) {
+    const UnsewnEdgePair& first = shape_result.unsewn_edges.front();
+    err << "tquad: warning: " << shape_result.unsewn_edges.size()
+        << " pair(s) of edges lie on each other without being shared (the file's faces are not sewn there, "
+        << "first: edges " << first.first << " and " << first.second
+        << "): the mesh is not connected along them (--report json lists them)\n";
+  }
   if (command.report_json) {
     nlohmann::ordered_json report = mesh_report_json(shape, quality);
     if (kind == InputKind::shape) {
@@ -241,6 +248,9 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
         changes.push_back({{"edge", c.edge}, {"from", c.from}, {"to", c.to}});
       }
       report["changed_edges"] = changes;
+      nlohmann::ordered_json unsewn = nlohmann::ordered_json::array();
+      for (const UnsewnEdgePair& p : shape_result.unsewn_edges) unsewn.push_back({p.first, p.second});
+      report["unsewn_edge_pairs"] = unsewn;
     }
     // Reasons of refused faces may come from other libraries: never fail on bad UTF-8.
     out << report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";

@@ -233,6 +233,11 @@ class ShapeMeshContext {
       for (TopExp_Explorer it(index_.face(f), TopAbs_EDGE); it.More(); it.Next()) needed_[index_.edge_index(it.Current())] = 1;
     }
     minimum_.assign(index_.edge_count(), 0);
+    for (const UnsewnEdgePair& pair : unsewn_edge_pairs(index_)) {
+      if (meshed_[index_.faces_of_edge(pair.first).front()] && meshed_[index_.faces_of_edge(pair.second).front()]) {
+        result_.unsewn_edges.push_back(pair);
+      }
+    }
   }
 
   std::string over_limit_text() const {

@@ -25,6 +25,7 @@
 #include "core/mesher.h"
 #include "core/shape_mesh.h"
 #include "occ/interval_assignment.h"
+#include "occ/unsewn_edges.h"
 
 namespace tquad {
 
@@ -83,6 +84,9 @@ struct ShapeMeshResult {
   int chained_edges = 0;                 // edges in those chains
   int balanced_bands = 0;                // faces one segment wide given equal long sides
   int balanced_rings = 0;                // faces of two loops given equal totals
+  // Edges of meshed faces that lie on each other without being one edge (the file's
+  // faces are not sewn there): the mesh has a crack along each (unsewn_edges.h).
+  std::vector<UnsewnEdgePair> unsewn_edges;
   double template_seconds = 0;           // summed over faces (all threads)
   double placement_seconds = 0;          // interior nodes onto the surfaces, summed
 };

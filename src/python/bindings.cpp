@@ -195,6 +195,9 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
     changes.append(d);
   }
   out["changed_edges"] = changes;
+  py::list unsewn;
+  for (const UnsewnEdgePair& p : result.unsewn_edges) unsewn.append(py::make_tuple(p.first, p.second));
+  out["unsewn_edge_pairs"] = unsewn;
   return out;
 }
 

@@ -17,11 +17,13 @@
 
 #include <gtest/gtest.h>
 
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <TopoDS_Compound.hxx>
+#include <gp_Pln.hxx>
 #include <nlohmann/json.hpp>
 
 #include "cli_test_support.h"
@@ -33,12 +35,6 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 
 std::string shape_file(const std::string& name) { return (fs::path(TQUAD_SHAPES_DIR) / name).string(); }
-
-// The shared real CAD parts live next to the project (/work/shared beside /work/main);
-// TQUAD_SHAPES_DIR is <project>/resources/shapes.
-fs::path shared_cad_file(const std::string& name) {
-  return fs::path(TQUAD_SHAPES_DIR).parent_path().parent_path().parent_path() / "shared" / "data" / "cad" / name;
-}
 
 struct Example {
   std::string file;
@@ -575,6 +571,31 @@ TEST_F(KeepGoing, WithItTheOtherFacesAreMeshedAndTheRefusedListed) {
   for (int f : meshed) EXPECT_EQ(refused.count(f), 0u) << "face " << f << " both meshed and refused";
   EXPECT_EQ(report["faces"].size(), meshed.size());
   EXPECT_EQ(report["quads"], mesh["quads"].size());
+}
+
+}  // namespace
+}  // namespace tquad::cli_test
+
+namespace tquad::cli_test {
+namespace {
+
+class UnsewnCli : public CliTest {};
+
+TEST_F(UnsewnCli, FacesTouchingWithoutASharedEdgeAreWarnedAboutAndListed) {
+  // Two squares side by side, each with its own edge on x = 10.
+  BRep_Builder builder;
+  TopoDS_Compound both;
+  builder.MakeCompound(both);
+  builder.Add(both, BRepBuilderAPI_MakeFace(gp_Pln(), 0, 10, 0, 10).Face());
+  builder.Add(both, BRepBuilderAPI_MakeFace(gp_Pln(), 10, 20, 0, 10).Face());
+  const std::string file = path("unsewn.brep");
+  ASSERT_TRUE(BRepTools::Write(both, file.c_str()));
+  const RunResult r = run_tquad({"mesh", file, "-o", path("out.vtu"), "--size", "2", "--report", "json"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_NE(r.err.find("1 pair(s) of edges lie on each other without being shared"), std::string::npos) << r.err;
+  const nlohmann::json report = nlohmann::json::parse(r.out);
+  ASSERT_EQ(report["unsewn_edge_pairs"].size(), 1u);
+  EXPECT_EQ(report["unsewn_edge_pairs"][0].size(), 2u);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 // node; every refused face with a reason. Prints a table of faces meshed and refused per file.
 #include <gtest/gtest.h>
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -21,7 +22,10 @@
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Writer.hxx>
 #include <BRepBndLib.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <TopoDS_Compound.hxx>
+#include <gp_Pln.hxx>
 #include <Bnd_Box.hxx>
 #include <ShapeAnalysis_Surface.hxx>
 
@@ -393,6 +397,50 @@ TEST(ShapePipeline, CancelStopsMeshingWithoutAResult) {
   options.threads = 1;
   EXPECT_THROW(mesh_shape(bracket(), options), MeshCancelled);
   EXPECT_EQ(faces_after_cancel, 0) << "no face is meshed after the cancel";
+}
+
+}  // namespace
+}  // namespace tquad
+
+namespace tquad {
+namespace {
+
+// Two 10 x 10 squares side by side, each made on its own (so each has its own edge
+// on x = 10), in one compound: the faces touch along that line without sharing it.
+TopoDS_Shape two_unsewn_squares() {
+  BRep_Builder builder;
+  TopoDS_Compound both;
+  builder.MakeCompound(both);
+  builder.Add(both, BRepBuilderAPI_MakeFace(gp_Pln(), 0, 10, 0, 10).Face());
+  builder.Add(both, BRepBuilderAPI_MakeFace(gp_Pln(), 10, 20, 0, 10).Face());
+  return both;
+}
+
+TEST(UnsewnEdges, FacesTouchingWithEdgesOfTheirOwnAreFoundAndReported) {
+  const TopoDS_Shape shape = two_unsewn_squares();
+  const ShapeIndex index(shape);
+  const std::vector<UnsewnEdgePair> pairs = unsewn_edge_pairs(index);
+  ASSERT_EQ(pairs.size(), 1u);
+  for (const int e : {pairs[0].first, pairs[0].second}) {
+    const BRepAdaptor_Curve curve(index.edge(e));
+    EXPECT_NEAR(curve.Value(curve.FirstParameter()).X(), 10.0, 1e-9) << "edge " << e << " is not on x = 10";
+  }
+  ShapeMeshOptions options;
+  options.size = 2.0;
+  const ShapeMeshResult result = mesh_shape(shape, options);
+  ASSERT_EQ(result.unsewn_edges.size(), 1u);
+  EXPECT_EQ(result.unsewn_edges[0].first, pairs[0].first);
+  // Meshing only one of the two faces leaves no crack to report.
+  options.faces = {0};
+  EXPECT_TRUE(mesh_shape(shape, options).unsewn_edges.empty());
+}
+
+TEST(UnsewnEdges, SewnOpenAndNonManifoldShapesHaveNone) {
+  for (const char* name : {"filleted_bracket.brep", "open_box.brep", "three_fins.brep", "plate_with_hole.step",
+                           "cylinder.brep"}) {
+    const fs::path path = fs::path(TQUAD_SOURCE_DIR) / "resources" / "shapes" / name;
+    EXPECT_TRUE(unsewn_edge_pairs(ShapeIndex(read_shape(path.string()))).empty()) << name;
+  }
 }
 
 }  // namespace

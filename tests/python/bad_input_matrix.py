@@ -272,6 +272,12 @@ def run_python(tquad, case: Case, folder: Path) -> Tuple[Optional[str], object]:
         return str(error), None
 
 
+def _shortened(message: str, folder: str) -> str:
+    """The message as the README shows it: no prefix, no machine's folders."""
+    message = message.replace("tquad: error: ", "", 1).replace(str(SHAPES) + "/", "")
+    return message.replace(folder + "/", "").replace(folder, "FOLDER").replace("|", "\\|")
+
+
 def markdown_table(tquad_exe: str, tquad) -> str:
     import tempfile
     lines = ["| input | exit | message (CLI) | Python |", "|---|---|---|---|"]
@@ -282,7 +288,7 @@ def markdown_table(tquad_exe: str, tquad) -> str:
             else:
                 cli = run_cli(tquad_exe, case, Path(cli_dir))
                 status = str(cli.status)
-                message = "(meshed)" if cli.status == 0 else cli.message.replace(cli_dir + "/", "").replace("|", "\\|")
+                message = "(meshed)" if cli.status == 0 else "`" + _shortened(cli.message, cli_dir) + "`"
             if case.python is None:
                 python = "n/a"
             else:

@@ -8,7 +8,7 @@
 Wrong input raises ValueError with the message the command line would print; the
 message names the face, edge, vertex, point or curve at fault.
 """
-from typing import Callable, Dict, Iterable, List, Mapping, Optional, Sequence, Union
+from typing import Callable, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -39,6 +39,9 @@ class Mesh:
         edge_size: for a shape, the target edge length used.
         changed_edges: for a shape, the edges whose counts changed by one so that
             every face's total is even: dicts ``edge``, ``from``, ``to``.
+        unsewn_edge_pairs: for a shape, pairs of edges that lie on each other
+            without being one edge (the file's faces are not sewn there): the mesh
+            is not connected along them.
     """
 
     def __init__(self, data: dict):
@@ -49,6 +52,7 @@ class Mesh:
         self.quality: dict = data["quality"]
         self.edge_size: Optional[float] = data.get("edge_size")
         self.changed_edges: List[dict] = data.get("changed_edges", [])
+        self.unsewn_edge_pairs: List[Tuple[int, int]] = data.get("unsewn_edge_pairs", [])
 
     @property
     def template_trees(self) -> List[str]:

@@ -1,4 +1,4 @@
-from typing import Callable, Dict, Iterable, List, Mapping, Optional, Sequence, Union
+from typing import Callable, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -14,6 +14,7 @@ class Mesh:
     quality: dict
     edge_size: Optional[float]
     changed_edges: List[dict]
+    unsewn_edge_pairs: List[Tuple[int, int]]
     def __init__(self, data: dict) -> None: ...
     @property
     def template_trees(self) -> List[str]: ...
