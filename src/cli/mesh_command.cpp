@@ -79,6 +79,21 @@ std::string one_line(std::string text) {
   return text;
 }
 
+// Two aligned rows: the scaled Jacobian's bins (below 0, then each tenth's lower
+// end) and the quads in each.
+void print_jacobian_histogram(std::ostream& out, const QualitySummary& quality) {
+  const char* bins[kJacobianBins] = {"<0", "0", ".1", ".2", ".3", ".4", ".5", ".6", ".7", ".8", ".9"};
+  std::size_t width = 2;
+  for (long long count : quality.jacobian_histogram) width = std::max(width, std::to_string(count).size());
+  std::string top = "  scaled Jacobian", bottom = "  quads          ";
+  for (int b = 0; b < kJacobianBins; ++b) {
+    const std::string count = std::to_string(quality.jacobian_histogram[b]);
+    top += " " + std::string(width - std::string(bins[b]).size(), ' ') + bins[b];
+    bottom += " " + std::string(width - count.size(), ' ') + count;
+  }
+  out << top << "\n" << bottom << "\n";
+}
+
 void print_summary(std::ostream& out, const MeshCommand& command, const ShapeMesh& mesh,
                    const QualitySummary& quality, double seconds, const ShapeMeshResult* shape) {
   out << command.input << " -> " << command.output << "\n"
@@ -107,6 +122,7 @@ void print_summary(std::ostream& out, const MeshCommand& command, const ShapeMes
       << fixed(quality.scaled_jacobian.avg, 3) << "\n"
       << "  inverted " << quality.inverted << ", degenerate " << quality.degenerate << ", collapsed " << quality.collapsed << "; time "
       << fixed(seconds, 3) << " s\n";
+  print_jacobian_histogram(out, quality);
 }
 
 // The boundary path: one region, face 0; also drawn as SVG on request.
@@ -126,8 +142,6 @@ ShapeMesh mesh_boundary_input(const MeshCommand& command, OutputFormat format, Q
   Vec3 normal;
   const std::optional<Vec3> reference =
       planar_normal(loop.points, normal) ? std::optional<Vec3>(normal) : std::nullopt;
-  quality = summarize_quality(mesh, reference);
-
   if (format == OutputFormat::svg) {
     // The figure draws the template tree's cuts, which only the QuadMesh carries.
     SvgOptions svg;
@@ -141,7 +155,9 @@ ShapeMesh mesh_boundary_input(const MeshCommand& command, OutputFormat format, Q
     write_svg_file(command.output, {SvgPanel{&mesh, boundary_points, caption}}, svg);
   }
   // The file writers and the report take a shape's mesh: a boundary input is face 0.
-  return single_face_mesh(std::move(mesh));
+  ShapeMesh shape = single_face_mesh(std::move(mesh));
+  quality = measure_mesh_quality(shape, reference);
+  return shape;
 }
 
 // The CAD path: every (selected) face, conforming across shared edges.
@@ -189,8 +205,7 @@ ShapeMesh mesh_shape_input(const MeshCommand& command, OutputFormat format, Qual
   }
   // Lee-Lo is signed by each quad's own normal; the scaled Jacobian is the occ
   // layer's, each corner against the face's outer normal at that corner.
-  quality = summarize_quality(result.mesh.nodes, result.mesh.quads, std::nullopt);
-  use_scaled_jacobians(quality, result.mesh.scaled_jacobian);
+  quality = measure_mesh_quality(result.mesh, std::nullopt);
   return std::move(result.mesh);
 }
 

@@ -100,10 +100,16 @@ QualitySummary summarize_quality(const QuadMesh& mesh, const std::optional<Vec3>
   return summarize_quality(mesh.nodes, mesh.quads, reference);
 }
 
-QualitySummary summarize_quality(const std::vector<Vec3>& nodes, const std::vector<Quad>& quads,
-                                 const std::optional<Vec3>& reference) {
-  Accumulator lee_lo, jacobian;
-  QualitySummary summary;
+int jacobian_bin(double j) {
+  if (!(j >= 0)) return 0;
+  return 1 + std::min(9, static_cast<int>(j * 10));
+}
+
+PerQuadQuality per_quad_quality(const std::vector<Vec3>& nodes, const std::vector<Quad>& quads,
+                                const std::optional<Vec3>& reference) {
+  PerQuadQuality out;
+  out.lee_lo.reserve(quads.size());
+  out.scaled_jacobian.reserve(quads.size());
   for (const Quad& q : quads) {
     const std::array<Vec3, 4> p{nodes[q[0]], nodes[q[1]], nodes[q[2]], nodes[q[3]]};
     Vec3 normal;
@@ -114,27 +120,63 @@ QualitySummary summarize_quality(const std::vector<Vec3>& nodes, const std::vect
       const double length = norm(normal);
       normal = length > 0 ? (1.0 / length) * normal : Vec3{0, 0, 0};
     }
-    const double j = scaled_jacobian(p, normal);
-    lee_lo.add(lee_lo_quality(p, normal));
+    out.lee_lo.push_back(lee_lo_quality(p, normal));
+    out.scaled_jacobian.push_back(scaled_jacobian(p, normal));
+  }
+  return out;
+}
+
+namespace {
+
+// The scaled-Jacobian part of a summary from per-quad values; below -inverted_below
+// is inverted.
+void summarize_jacobians(QualitySummary& summary, const std::vector<double>& per_quad, double inverted_below) {
+  Accumulator jacobian;
+  summary.inverted = summary.degenerate = 0;
+  summary.jacobian_histogram.fill(0);
+  for (double j : per_quad) {
     jacobian.add(j);
-    if (is_collapsed(p)) ++summary.collapsed;
-    if (j < -kInvertedBelow) ++summary.inverted;
+    ++summary.jacobian_histogram[jacobian_bin(j)];
+    if (j < -inverted_below) ++summary.inverted;
     else if (j <= kDegenerateUpTo) ++summary.degenerate;
   }
-  summary.lee_lo = lee_lo.stats();
   summary.scaled_jacobian = jacobian.stats();
+}
+
+}  // namespace
+
+QualitySummary summarize_quality(const std::vector<Vec3>& nodes, const std::vector<Quad>& quads,
+                                 const std::optional<Vec3>& reference) {
+  return summarize_quality(per_quad_quality(nodes, quads, reference), nodes, quads);
+}
+
+QualitySummary summarize_quality(const PerQuadQuality& per_quad, const std::vector<Vec3>& nodes,
+                                 const std::vector<Quad>& quads) {
+  QualitySummary summary;
+  Accumulator lee_lo;
+  for (double q : per_quad.lee_lo) lee_lo.add(q);
+  summary.lee_lo = lee_lo.stats();
+  summarize_jacobians(summary, per_quad.scaled_jacobian, kInvertedBelow);
+  for (const Quad& q : quads) {
+    if (is_collapsed({nodes[q[0]], nodes[q[1]], nodes[q[2]], nodes[q[3]]})) ++summary.collapsed;
+  }
   return summary;
 }
 
 void use_scaled_jacobians(QualitySummary& summary, const std::vector<double>& per_quad) {
-  Accumulator jacobian;
-  summary.inverted = summary.degenerate = 0;
-  for (double j : per_quad) {
-    jacobian.add(j);
-    if (j < -kSurfaceInvertedBelow) ++summary.inverted;
-    else if (j <= kDegenerateUpTo) ++summary.degenerate;
+  summarize_jacobians(summary, per_quad, kSurfaceInvertedBelow);
+}
+
+QualitySummary measure_mesh_quality(ShapeMesh& mesh, const std::optional<Vec3>& reference) {
+  PerQuadQuality per_quad = per_quad_quality(mesh.nodes, mesh.quads, reference);
+  QualitySummary summary = summarize_quality(per_quad, mesh.nodes, mesh.quads);
+  mesh.lee_lo = std::move(per_quad.lee_lo);
+  if (mesh.scaled_jacobian.size() == mesh.quads.size() && !mesh.quads.empty()) {
+    use_scaled_jacobians(summary, mesh.scaled_jacobian);
+  } else {
+    mesh.scaled_jacobian = std::move(per_quad.scaled_jacobian);
   }
-  summary.scaled_jacobian = jacobian.stats();
+  return summary;
 }
 
 }  // namespace tquad

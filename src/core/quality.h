@@ -4,8 +4,10 @@
 
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "core/quad_mesh.h"
+#include "core/shape_mesh.h"
 
 namespace tquad {
 
@@ -55,9 +57,15 @@ constexpr double kDegenerateUpTo = 1e-6;
 constexpr double kCollapsedEdgeRatio = 1e-3;
 bool is_collapsed(const std::array<Vec3, 4>& quad);
 
+// Histogram of the scaled Jacobian: bin 0 counts the quads below 0 (inverted, or a
+// straight angle by rounding), bins 1 to 10 the tenths [0, 0.1), ..., [0.9, 1].
+constexpr int kJacobianBins = 11;
+int jacobian_bin(double scaled_jacobian);
+
 struct QualitySummary {
   QualityStats lee_lo;
   QualityStats scaled_jacobian;
+  std::array<long long, kJacobianBins> jacobian_histogram{};
   long long inverted = 0;    // quads with a scaled Jacobian below -kInvertedBelow
   long long degenerate = 0;  // quads with a scaled Jacobian in [-kInvertedBelow, kDegenerateUpTo]
   long long collapsed = 0;   // quads with an edge under kCollapsedEdgeRatio of their longest
@@ -68,6 +76,23 @@ struct QualitySummary {
 QualitySummary summarize_quality(const QuadMesh& mesh, const std::optional<Vec3>& reference);
 QualitySummary summarize_quality(const std::vector<Vec3>& nodes, const std::vector<Quad>& quads,
                                  const std::optional<Vec3>& reference);
+
+// Each quad's Lee-Lo and scaled Jacobian, signed as summarize_quality signs them.
+struct PerQuadQuality {
+  std::vector<double> lee_lo, scaled_jacobian;
+};
+PerQuadQuality per_quad_quality(const std::vector<Vec3>& nodes, const std::vector<Quad>& quads,
+                                const std::optional<Vec3>& reference);
+
+// The summary of values per_quad_quality gave for these quads.
+QualitySummary summarize_quality(const PerQuadQuality& per_quad, const std::vector<Vec3>& nodes,
+                                 const std::vector<Quad>& quads);
+
+// The quality a user looks at, the same for every front end: fills mesh.lee_lo (each
+// quad's own normal, or `reference` for a planar region) and, when the mesher has not
+// measured it on the surface, mesh.scaled_jacobian the same way; returns their
+// summary (the surface's measure decides what is inverted when it is there).
+QualitySummary measure_mesh_quality(ShapeMesh& mesh, const std::optional<Vec3>& reference);
 
 // Replaces the scaled-Jacobian statistics and the inverted and degenerate counts by
 // those of per-quad values measured on a surface (each corner against the surface

@@ -32,6 +32,8 @@ struct ShapeMesh {
   // outer normal at that corner (face_mesher.h, check_on_surface), the one measure of
   // inverted quads on curved faces; the quality report takes it when present.
   std::vector<double> scaled_jacobian;
+  // Per quad (or empty): the Lee-Lo shape metric (quality.h), for the user to look at.
+  std::vector<double> lee_lo;
 };
 
 // One boundary region as a shape of one face (face 0), moving the mesh's arrays.

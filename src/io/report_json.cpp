@@ -24,6 +24,8 @@ nlohmann::ordered_json mesh_report_json(const ShapeMesh& mesh, const QualitySumm
   q["inverted"] = quality.inverted;
   q["degenerate"] = quality.degenerate;
   q["collapsed"] = quality.collapsed;
+  // The quads below 0, then per tenth from [0, 0.1) to [0.9, 1] (quality.h).
+  q["jacobian_histogram"] = quality.jacobian_histogram;
   report["quality"] = q;
   nlohmann::ordered_json faces = nlohmann::ordered_json::array();
   for (const FaceMesh& f : mesh.faces) {

@@ -14,6 +14,12 @@ namespace {
 
 void check_shape_mesh(const ShapeMesh& mesh) {
   const auto node_count = static_cast<std::int64_t>(mesh.nodes.size());
+  for (const auto& [name, values] : {std::pair{"scaled_jacobian", &mesh.scaled_jacobian}, std::pair{"lee_lo", &mesh.lee_lo}}) {
+    if (!values->empty() && values->size() != mesh.quads.size()) {
+      fail(std::string(name) + " has " + std::to_string(values->size()) + " values for " +
+           std::to_string(mesh.quads.size()) + " quads");
+    }
+  }
   for (std::size_t k = 0; k < mesh.quads.size(); ++k) {
     for (int i = 0; i < 4; ++i) {
       const NodeId id = mesh.quads[k][i];

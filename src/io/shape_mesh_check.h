@@ -4,7 +4,8 @@
 //   - the face records are in quad order and own every quad exactly once: the first
 //     starts at quad 0, each next one starts where the previous ended, the last ends at
 //     quads.size() (a record may own 0 quads);
-//   - face indices are >= 0 and unique; a refused face is >= 0 and not also meshed.
+//   - face indices are >= 0 and unique; a refused face is >= 0 and not also meshed;
+//   - the per-quad quality arrays are empty or hold one value per quad.
 #pragma once
 
 #include "core/shape_mesh.h"

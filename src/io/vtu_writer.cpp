@@ -85,6 +85,13 @@ void write_vtu(std::ostream& out, const ShapeMesh& mesh, VtuEncoding encoding) {
   const ArrayBlock offset_block{"Int64", "offsets", 1, offsets.data(), cells * sizeof(std::int64_t)};
   const ArrayBlock type_block{"UInt8", "types", 1, types.data(), cells};
   const ArrayBlock face_block{"Int32", "face", 1, face.data(), cells * sizeof(std::int32_t)};
+  // Cell data: the face of each quad, and its quality when the mesh carries it
+  // (ParaView colours by any of them).
+  std::vector<const ArrayBlock*> cell_blocks{&face_block};
+  const bool has_quality = cells > 0 && mesh.scaled_jacobian.size() == cells && mesh.lee_lo.size() == cells;
+  const ArrayBlock jacobian_block{"Float64", "scaled_jacobian", 1, mesh.scaled_jacobian.data(), cells * sizeof(double)};
+  const ArrayBlock lee_lo_block{"Float64", "lee_lo", 1, mesh.lee_lo.data(), cells * sizeof(double)};
+  if (has_quality) cell_blocks.insert(cell_blocks.end(), {&jacobian_block, &lee_lo_block});
 
   write_header(out, mesh);
   if (encoding == VtuEncoding::appended_raw) {
@@ -101,10 +108,12 @@ void write_vtu(std::ostream& out, const ShapeMesh& mesh, VtuEncoding encoding) {
     tag(offset_block);
     tag(type_block);
     out << "      </Cells>\n      <CellData Scalars=\"face\">\n";
-    tag(face_block);
+    for (const ArrayBlock* a : cell_blocks) tag(*a);
     out << "      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n"
         << "  <AppendedData encoding=\"raw\">\n   _";
-    for (const ArrayBlock* a : {&points, &connectivity, &offset_block, &type_block, &face_block}) {
+    std::vector<const ArrayBlock*> blocks{&points, &connectivity, &offset_block, &type_block};
+    blocks.insert(blocks.end(), cell_blocks.begin(), cell_blocks.end());
+    for (const ArrayBlock* a : blocks) {
       out.write(reinterpret_cast<const char*>(&a->bytes), sizeof a->bytes);
       out.write(static_cast<const char*>(a->data), static_cast<std::streamsize>(a->bytes));
     }
@@ -132,6 +141,10 @@ void write_vtu(std::ostream& out, const ShapeMesh& mesh, VtuEncoding encoding) {
   block(type_block, types, 32);
   out << "      </Cells>\n      <CellData Scalars=\"face\">\n";
   block(face_block, face, 32);
+  if (has_quality) {
+    block(jacobian_block, mesh.scaled_jacobian, 6);
+    block(lee_lo_block, mesh.lee_lo, 6);
+  }
   out << "      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
 }
 

@@ -41,7 +41,16 @@ py::dict quality_dict(const QualitySummary& q) {
   d["inverted"] = q.inverted;
   d["degenerate"] = q.degenerate;
   d["collapsed"] = q.collapsed;
+  py::list histogram;
+  for (long long count : q.jacobian_histogram) histogram.append(count);
+  d["jacobian_histogram"] = histogram;
   return d;
+}
+
+py::array_t<double> numpy_copy(const std::vector<double>& values) {
+  py::array_t<double> out(static_cast<py::ssize_t>(values.size()));
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
 }
 
 // The mesh as plain Python data: numpy arrays for nodes and quads (copied once).
@@ -79,6 +88,8 @@ py::dict mesh_dict(const ShapeMesh& mesh, const QualitySummary& quality) {
   out["faces"] = faces;
   out["refused_faces"] = refused;
   out["quality"] = quality_dict(quality);
+  out["scaled_jacobian"] = numpy_copy(mesh.scaled_jacobian);
+  out["lee_lo"] = numpy_copy(mesh.lee_lo);
   return out;
 }
 
@@ -102,19 +113,20 @@ py::dict mesh_boundary_binding(const py::array_t<double, py::array::c_style | py
     loop.points.push_back({p(i, 0), p(i, 1), p.shape(1) == 3 ? p(i, 2) : 0.0});
   }
   loop.corners = corners;
-  QuadMesh mesh;
+  ShapeMesh shape;
   QualitySummary quality;
   {
     py::gil_scoped_release release;
-    mesh = mesh_boundary(loop, template_options(t4_ratio, t5_cut_edges, max_quads));
+    QuadMesh mesh = mesh_boundary(loop, template_options(t4_ratio, t5_cut_edges, max_quads));
     // The CLI's final check, the same for every front end.
     const std::string problem = check_disk_mesh(mesh, static_cast<int>(loop.points.size()));
     if (!problem.empty()) throw std::logic_error("the mesh is invalid: " + problem);
     Vec3 normal;
     const bool planar = planar_normal(loop.points, normal);
-    quality = summarize_quality(mesh, planar ? std::optional<Vec3>(normal) : std::nullopt);
+    shape = single_face_mesh(std::move(mesh));
+    quality = measure_mesh_quality(shape, planar ? std::optional<Vec3>(normal) : std::nullopt);
   }
-  py::dict out = mesh_dict(single_face_mesh(std::move(mesh)), quality);
+  py::dict out = mesh_dict(shape, quality);
   return out;
 }
 
@@ -181,8 +193,7 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
       callback_error->restore();
       throw py::error_already_set();
     }
-    quality = summarize_quality(result.mesh.nodes, result.mesh.quads, std::nullopt);
-    use_scaled_jacobians(quality, result.mesh.scaled_jacobian);
+    quality = measure_mesh_quality(result.mesh, std::nullopt);
   }
   py::dict out = mesh_dict(result.mesh, quality);
   out["edge_size"] = result.size;

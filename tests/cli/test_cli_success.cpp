@@ -135,11 +135,14 @@ TEST_F(Success, VtuOutputIsAValidAppendedBinaryUnstructuredGrid) {
   EXPECT_NE(vtu.find("NumberOfPoints=\"" + std::to_string(nodes) + "\""), std::string::npos);
   EXPECT_NE(vtu.find("NumberOfCells=\"" + std::to_string(quads) + "\""), std::string::npos);
   EXPECT_NE(vtu.find("Name=\"face\""), std::string::npos);
+  EXPECT_NE(vtu.find("Name=\"scaled_jacobian\""), std::string::npos);
+  EXPECT_NE(vtu.find("Name=\"lee_lo\""), std::string::npos);
   const std::string marker = "<AppendedData encoding=\"raw\">";
   std::size_t at = vtu.find(marker);
   ASSERT_NE(at, std::string::npos);
   at = vtu.find('_', at) + 1;
-  const std::uint64_t expected_bytes[] = {24 * nodes, 16 * quads, 8 * quads, quads, 4 * quads};
+  // Points, connectivity, offsets, types; cell data face, scaled_jacobian, lee_lo.
+  const std::uint64_t expected_bytes[] = {24 * nodes, 16 * quads, 8 * quads, quads, 4 * quads, 8 * quads, 8 * quads};
   std::vector<std::string> blocks;
   for (std::uint64_t expected : expected_bytes) {
     std::uint64_t bytes = 0;
@@ -163,6 +166,19 @@ TEST_F(Success, VtuOutputIsAValidAppendedBinaryUnstructuredGrid) {
     EXPECT_EQ(offset, static_cast<std::int64_t>(4 * (k + 1)));
     EXPECT_EQ(blocks[3][k], 9);  // VTK_QUAD
   }
+  // The quality arrays: their minimum is the report's.
+  for (const auto& [block, name] : {std::pair{5, "scaled_jacobian"}, std::pair{6, "lee_lo"}}) {
+    double lowest = 2;
+    for (std::uint64_t k = 0; k < quads; ++k) {
+      double value = 0;
+      std::memcpy(&value, blocks[block].data() + 8 * k, 8);
+      lowest = std::min(lowest, value);
+    }
+    EXPECT_DOUBLE_EQ(lowest, report["quality"][name]["min"].get<double>()) << name;
+  }
+  std::uint64_t binned = 0;
+  for (const auto& count : report["quality"]["jacobian_histogram"]) binned += count.get<std::uint64_t>();
+  EXPECT_EQ(binned, quads);
 }
 
 TEST_F(Success, SvgOutputDrawsTheMeshAndItsTemplateTree) {

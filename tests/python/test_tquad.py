@@ -143,5 +143,48 @@ class MeshShapeTest(unittest.TestCase):
             tquad.mesh_shape(path, progress=broken)
 
 
+class QualityFieldsTest(unittest.TestCase):
+    """Per-quad quality as the module returns it, as the .vtu carries it, and its
+    histogram: the same values everywhere."""
+
+    def _check_fields(self, mesh):
+        n = len(mesh.quads)
+        self.assertEqual(mesh.scaled_jacobian.shape, (n,))
+        self.assertEqual(mesh.lee_lo.shape, (n,))
+        q = mesh.quality
+        self.assertAlmostEqual(mesh.scaled_jacobian.min(), q["scaled_jacobian"]["min"], places=12)
+        self.assertAlmostEqual(mesh.lee_lo.min(), q["lee_lo"]["min"], places=12)
+        histogram = q["jacobian_histogram"]
+        self.assertEqual(len(histogram), 11)
+        self.assertEqual(sum(histogram), n, "every quad in one bin")
+        sj = mesh.scaled_jacobian
+        expected = [int((sj < 0).sum())] + [int(((sj >= k / 10) & (sj < (k + 1) / 10)).sum()) for k in range(9)]
+        expected.append(int((sj >= 0.9).sum()))
+        self.assertEqual(histogram, expected)
+
+    def test_boundary_and_shape_meshes_carry_per_quad_quality(self):
+        points, corners = square(6, 4, 6, 4)
+        self._check_fields(tquad.mesh_boundary(points, corners))
+        self._check_fields(tquad.mesh_shape(os.path.join(SHAPES, "filleted_bracket.brep")))
+
+    def test_the_vtu_holds_the_same_values_as_cell_data(self):
+        import subprocess
+        exe = os.environ.get("TQUAD_EXE")
+        if not exe:
+            self.skipTest("TQUAD_EXE is not set (ctest sets it to the built tquad)")
+        try:
+            import meshio
+        except ImportError:
+            self.skipTest("meshio is not installed")
+        path = os.path.join(SHAPES, "filleted_bracket.brep")
+        with tempfile.TemporaryDirectory() as folder:
+            out = os.path.join(folder, "bracket.vtu")
+            subprocess.run([exe, "mesh", path, "-o", out], check=True, capture_output=True)
+            cells = meshio.read(out).cell_data
+        mesh = tquad.mesh_shape(path)
+        np.testing.assert_array_equal(cells["scaled_jacobian"][0], mesh.scaled_jacobian)
+        np.testing.assert_array_equal(cells["lee_lo"][0], mesh.lee_lo)
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -35,7 +35,12 @@ class Mesh:
             and ``quad_count`` (the face's quads are a contiguous range).
         refused_faces: one dict per face not meshed: ``face`` and ``reason``.
         quality: ``lee_lo`` and ``scaled_jacobian`` (each ``min``, ``avg``,
-            ``max``, ``std``), and the ``inverted`` and ``degenerate`` quad counts.
+            ``max``, ``std``), the ``inverted``, ``degenerate`` and ``collapsed``
+            quad counts, and ``jacobian_histogram``: 11 counts, the quads below 0,
+            then per tenth of the scaled Jacobian from [0, 0.1) to [0.9, 1].
+        scaled_jacobian, lee_lo: float64 arrays, one value per quad (on a CAD
+            face, the scaled Jacobian's corners are measured against the surface's
+            outer normal).
         edge_size: for a shape, the target edge length used.
         changed_edges: for a shape, the edges whose counts changed by one so that
             every face's total is even: dicts ``edge``, ``from``, ``to``.
@@ -53,6 +58,8 @@ class Mesh:
         self.edge_size: Optional[float] = data.get("edge_size")
         self.changed_edges: List[dict] = data.get("changed_edges", [])
         self.unsewn_edge_pairs: List[Tuple[int, int]] = data.get("unsewn_edge_pairs", [])
+        self.scaled_jacobian: np.ndarray = data["scaled_jacobian"]
+        self.lee_lo: np.ndarray = data["lee_lo"]
 
     @property
     def template_trees(self) -> List[str]:

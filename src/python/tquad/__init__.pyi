@@ -15,6 +15,8 @@ class Mesh:
     edge_size: Optional[float]
     changed_edges: List[dict]
     unsewn_edge_pairs: List[Tuple[int, int]]
+    scaled_jacobian: np.ndarray
+    lee_lo: np.ndarray
     def __init__(self, data: dict) -> None: ...
     @property
     def template_trees(self) -> List[str]: ...
