@@ -16,7 +16,8 @@ build="$repo_dir/build-fuzz"
 cmake -S "$repo_dir" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
   -DTQUAD_FUZZ=ON -DTQUAD_BUILD_TESTS=OFF > /dev/null
 cmake --build "$build" --target "${targets[@]}"
-export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1"
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
+export LSAN_OPTIONS="suppressions=$repo_dir/scripts/lsan_suppressions.txt:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 mkdir -p "$build/artifacts"
 for target in "${targets[@]}"; do
