@@ -30,7 +30,9 @@ Scaled Jacobian of a quad p0..p3, the same code for both meshers: at corner i, w
 e1 = p[i+1] - p[i], e2 = p[i-1] - p[i] and the quad's own normal n = (p2 - p0) x (p3 - p1),
 s_i = dot(e1 x e2, n) / (|e1| |e2| |n|); the quad's value is the smallest s_i (1 for a
 rectangle, <= 0 for an inverted or degenerate quad). Gmsh's triangles are left out of its
-scaled Jacobian columns. Nothing here asserts anything; the numbers are printed as measured.
+scaled Jacobian columns; `all_elements_min_sine` in the JSON is the smallest corner sine
+over its quads and triangles together (a quad's scaled Jacobian is its smallest corner
+sine, so the two compare; an equilateral triangle scores 0.866). Nothing here asserts anything; the numbers are printed as measured.
 """
 
 import argparse
@@ -71,6 +73,21 @@ def scaled_jacobian(points, quads):
     corner = np.zeros_like(signed)
     np.divide(signed, denom, out=corner, where=denom > 0)             # degenerate -> 0
     return corner.min(axis=1)
+
+
+def triangle_corner_sines(points, triangles):
+    """Smallest corner sine of each triangle (sin 60 = 0.866 for an equilateral one),
+    comparable with a quad's scaled Jacobian, which is its smallest corner sine."""
+    if len(triangles) == 0:
+        return np.zeros(0)
+    p = np.asarray(points, dtype=float)[np.asarray(triangles)]      # (m, 3, 3)
+    e1 = np.roll(p, -1, axis=1) - p
+    e2 = np.roll(p, 1, axis=1) - p
+    cross = np.linalg.norm(np.cross(e1, e2), axis=2)
+    denom = np.linalg.norm(e1, axis=2) * np.linalg.norm(e2, axis=2)
+    sines = np.zeros_like(cross)
+    np.divide(cross, denom, out=sines, where=denom > 0)
+    return sines.min(axis=1)
 
 
 def sj_stats(values):
@@ -116,19 +133,19 @@ def set_size(gmsh, size):
 
 
 def gmsh_surface_mesh(gmsh):
-    """Node coordinates, quads and triangle count of the 2D mesh, and surfaces left empty."""
+    """Node coordinates, quads and triangles of the 2D mesh, and surfaces left empty."""
     node_tags, coords, _ = gmsh.model.mesh.getNodes()
     index = np.zeros(int(node_tags.max()) + 1 if len(node_tags) else 1, dtype=np.int64)
     index[node_tags.astype(np.int64)] = np.arange(len(node_tags))
     points = coords.reshape(-1, 3)
     quads = np.zeros((0, 4), dtype=np.int64)
-    triangles = 0
+    triangles = np.zeros((0, 3), dtype=np.int64)
     types, _, nodes = gmsh.model.mesh.getElements(2)
     for etype, enodes in zip(types, nodes):
         if etype == 3:
             quads = np.vstack([quads, index[enodes.astype(np.int64)].reshape(-1, 4)])
         elif etype == 2:
-            triangles += len(enodes) // 3
+            triangles = np.vstack([triangles, index[enodes.astype(np.int64)].reshape(-1, 3)])
     empty = sum(1 for _, tag in gmsh.model.getEntities(2)
                 if not any(len(t) for t in gmsh.model.mesh.getElements(2, tag)[1]))
     return points, quads, triangles, empty
@@ -161,8 +178,12 @@ def gmsh_job(spec):
         points, quads, triangles, empty = gmsh_surface_mesh(gmsh)
     finally:
         gmsh.finalize()
-    result.update({"quads": len(quads), "triangles": triangles, "empty_surfaces": empty,
-                   "sj": sj_stats(scaled_jacobian(points, quads))})
+    # The worst corner sine over all elements: a triangle left by recombination is
+    # an element the solver sees too.
+    sines = np.concatenate([scaled_jacobian(points, quads), triangle_corner_sines(points, triangles)])
+    result.update({"quads": len(quads), "triangles": len(triangles), "empty_surfaces": empty,
+                   "sj": sj_stats(scaled_jacobian(points, quads)),
+                   "all_elements_min_sine": float(sines.min()) if len(sines) else None})
     print(json.dumps(result))
 
 

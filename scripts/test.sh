@@ -9,7 +9,7 @@ ctest --test-dir "$repo_dir/build" --output-on-failure --timeout 600 -j "$(nproc
 # table of faces meshed and refused per file; show them.
 grep -h -e "\[ quality  \]" -e "\[ shapes   \]" "$repo_dir/build/Testing/Temporary/LastTest.log" || true
 # In CI (CI=true), or with --sanitize: the C++ suites again under AddressSanitizer and
-# UndefinedBehaviorSanitizer, and a short run of each fuzz target (about 20 minutes
+# UndefinedBehaviorSanitizer, and a short run of each fuzz target (about 13 minutes
 # more on 2 cores). The shape targets fork a reader per input (about 10 runs a second
 # under the sanitizers): 200 runs each.
 if [ "${CI:-}" = true ] || [ "${1:-}" = --sanitize ]; then
