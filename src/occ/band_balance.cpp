@@ -23,7 +23,7 @@ struct Side {
 
 }  // namespace
 
-int balance_one_quad_bands(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& segments,
+int balance_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& segments,
                            const std::vector<std::vector<int>>& chains) {
   std::vector<int> chain_of(index.edge_count(), -1);
   for (std::size_t c = 0; c < chains.size(); ++c) for (int e : chains[c]) chain_of[e] = static_cast<int>(c);

@@ -1,4 +1,4 @@
-// balance_one_quad_bands: a face whose chosen corners make it a band one or two
+// balance_narrow_bands: a face whose chosen corners make it a band one or two
 // segments wide (two opposite sides of at most kNarrowBand segments each) gets equal
 // counts on its two long sides, so it is a mapped grid. One quad across has no room
 // for a transition at all (the templates' T1 and T2 need two rows); two quads across
@@ -17,7 +17,7 @@ namespace tquad {
 
 // segments: per edge, changed in place; chains: edges kept equal. Returns the number
 // of faces balanced.
-int balance_one_quad_bands(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& segments,
+int balance_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& segments,
                            const std::vector<std::vector<int>>& chains);
 
 }  // namespace tquad

@@ -176,7 +176,7 @@ IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector
   std::vector<double> goals(edges, 1.0);
   for (int e = 0; e < edges; ++e) if (segments[e] > 0) goals[e] = goal(e);
   report.balanced_rings = balance_rings(index, meshed, goals, floors, segments, chains);
-  report.balanced_bands = balance_one_quad_bands(index, meshed, segments, chains);
+  report.balanced_bands = balance_narrow_bands(index, meshed, segments, chains);
   // Faces left odd are made even by changing whole chains (which keeps their faces
   // mapped) or single edges.
   make_faces_even(index, meshed, lengths, size, segments, floor, chains);
