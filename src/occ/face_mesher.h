@@ -41,6 +41,8 @@ struct FaceMeshResult {
   std::optional<PolarMap> polar;
   double template_seconds = 0;   // building the template mesh (core)
   double placement_seconds = 0;  // putting its interior nodes on the surface
+  double meshing_seconds = 0;    // the face's routes before smoothing, every candidate
+  double smoothing_seconds = 0;  // smoothing the chosen mesh on the surface
 };
 
 // Whether the surface's normal direction at a point is not to be trusted: S_u and

@@ -3,6 +3,7 @@
 #include <Standard_Failure.hxx>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <optional>
 
@@ -44,6 +45,7 @@ constexpr double kGoodEnoughCorner = 0.3;
 // allow_inverted (never a silent bad mesh).
 FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary& boundary,
                               const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size) {
+  const auto start = std::chrono::steady_clock::now();
   const std::string name = "face " + std::to_string(f);
   std::optional<FaceMeshResult> best;
   std::string refusal;
@@ -107,9 +109,13 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     if (refusal_internal) throw std::runtime_error(refusal);
     throw InputError(refusal);
   }
+  // Every candidate route counts, the rejected ones too.
+  best->meshing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (options.smooth) {
     const bool seam = std::find(boundary.is_seam.begin(), boundary.is_seam.end(), 1) != boundary.is_seam.end();
+    const auto smoothing = std::chrono::steady_clock::now();
     smooth_face_mesh(index.face(f), seam, nodes, *best);
+    best->smoothing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - smoothing).count();
   }
   if (best->inverted > 0 && !options.allow_inverted) {
     char worst[32];

@@ -380,6 +380,8 @@ class ShapeMeshContext {
       result_.off_surface += m.off_surface;
       result_.template_seconds += m.template_seconds;
       result_.placement_seconds += m.placement_seconds;
+      result_.meshing_seconds += m.meshing_seconds;
+      result_.smoothing_seconds += m.smoothing_seconds;
     }
     drop_unused_nodes(mesh);
   }

@@ -89,6 +89,8 @@ struct ShapeMeshResult {
   std::vector<UnsewnEdgePair> unsewn_edges;
   double template_seconds = 0;           // summed over faces (all threads)
   double placement_seconds = 0;          // interior nodes onto the surfaces, summed
+  double meshing_seconds = 0;            // every face's routes before smoothing, summed
+  double smoothing_seconds = 0;          // the chosen meshes smoothed, summed
 };
 
 // Throws InputError (a face index out of range; without keep_going, a refused face,

@@ -10,6 +10,11 @@ namespace tquad {
 
 void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<Vec3>& nodes, FaceMeshResult& mesh) {
   if ((mesh.used_projection && has_seam) || mesh.interior.empty()) return;
+  // Every corner already at good_enough: smooth_mesh would move no node (it starts
+  // from the nodes with a corner under it), and there is no doublet (a doublet's
+  // node has a corner of 180 degrees or more). Measured: each mapped face of 3,364
+  // quads of box.brep at D/100 spent about 12 ms here for nothing.
+  if (mesh.worst_corner >= SmoothingOptions{}.good_enough) return;
   const std::size_t fixed = mesh.boundary_nodes.size();
   if (mesh.param.size() != fixed + mesh.interior.size()) return;  // not measured on the surface
   const BRepAdaptor_Surface surface(face);
