@@ -15,6 +15,7 @@
 #include "core/mesh_validation.h"
 #include "core/planar_self_intersection.h"
 #include "core/quality.h"
+#include "io/shape_mesh_check.h"
 #include "core/shape_mesh.h"
 #include "occ/shape_mesher.h"
 #include "occ/isolated_reader.h"
@@ -192,6 +193,13 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
       py::gil_scoped_acquire gil;
       callback_error->restore();
       throw py::error_already_set();
+    }
+    // The check every writer of the CLI runs before a byte is written; a mesh failing
+    // it is the mesher's fault (RuntimeError), not the input's.
+    try {
+      check_shape_mesh(result.mesh);
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(std::string("internal failure: ") + e.what());
     }
     quality = measure_mesh_quality(result.mesh, std::nullopt);
   }
