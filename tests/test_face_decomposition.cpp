@@ -62,6 +62,46 @@ TEST(FaceDecomposition, SquareWithFourCircularHoles) {
   EXPECT_EQ(mesh.template_tree.substr(0, 1), "D");
 }
 
+// Patches of the decomposition with a side that starts or ends at node 0 (the first
+// point of the outer loop).
+int patches_at_first_point(const FaceDecomposition& d) {
+  int count = 0;
+  for (const DomainPatch& patch : d.patches) {
+    bool touches = false;
+    for (const PatchSide& side : patch.sides) {
+      if (side.is_cut) {
+        touches = touches || d.cuts[side.index].from == 0 || d.cuts[side.index].to == 0;
+      } else {
+        const BoundaryPiece& piece = d.pieces[side.index];
+        touches = touches || (piece.loop == 0 && (piece.first == 0 || piece.last == 0));
+      }
+    }
+    count += touches ? 1 : 0;
+  }
+  return count;
+}
+
+TEST(FaceDecomposition, ClearedCornerEarsLeaveAPlateCornerToOnePatch) {
+  // A plate with a hole near its corner (0, 0): the hole lies inside the circle
+  // through the corner and its coarse neighbours, so the smallest-angle flips fan cuts
+  // into the corner; with the ears cleared, one patch takes the corner whole.
+  PlanarDomain d;
+  d.loops.push_back(polygon_loop({{0, 0}, {10, 0}, {10, 8}, {0, 8}}, 20));
+  d.loops.push_back(circle_hole({2.2, 2.2}, 0.8, 12));
+  d.loops.push_back(circle_hole({7, 5}, 1.0, 12));
+  const FaceDecomposition plain = decompose_domain(d);
+  DecompositionOptions options;
+  options.clear_corner_ears = true;
+  const FaceDecomposition cleared = decompose_domain(d, options);
+  EXPECT_EQ(plain.corner_splits, 0);
+  EXPECT_GT(cleared.corner_splits, 0);
+  std::printf("[ corner   ] patches at the plate corner: %d plain, %d with its ear cleared\n",
+              patches_at_first_point(plain), patches_at_first_point(cleared));
+  EXPECT_EQ(patches_at_first_point(cleared), 1);
+  const QuadMesh mesh = mesh_decomposed_domain(d, cleared, assign_cut_intervals(d, cleared, 0.5), MeshOptions{});
+  expect_valid(d, mesh, "plate with its corner ear cleared");
+}
+
 TEST(FaceDecomposition, LShapeIsCutAtItsReflexCorner) {
   PlanarDomain d;
   d.loops.push_back(polygon_loop({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, 4));

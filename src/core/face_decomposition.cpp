@@ -201,9 +201,10 @@ namespace {
 
 class Decomposer {
  public:
-  explicit Decomposer(const PlanarDomain& domain) : d_(domain) {
+  Decomposer(const PlanarDomain& domain, const DecompositionOptions& options) : d_(domain) {
     for (const DomainLoop& loop : d_.loops) coarsening_.emplace_back(loop);
     split_by_feature_size();
+    if (options.clear_corner_ears) corner_splits_ = clear_corner_ears();
   }
 
   // Triangulates, clears blocked and sliver cuts by adding coarse vertices, and
@@ -213,6 +214,7 @@ class Decomposer {
   FaceDecomposition run() {
     constexpr int kRounds = 12;
     FaceDecomposition out;
+    out.corner_splits = corner_splits_;
     std::vector<std::set<int>> coarse;
     for (const LoopCoarsening& c : coarsening_) coarse.push_back(c.coarse());
     for (int round = 0;; ++round) {
@@ -263,6 +265,52 @@ class Decomposer {
 
  private:
   const Vec3& point(int loop, int i) const { return d_.loops[loop].points[i]; }
+
+  // DecompositionOptions::clear_corner_ears; returns the pieces split.
+  int clear_corner_ears() {
+    constexpr double kCornerTurn = 60.0 * kDegree;
+    constexpr int kPasses = 8;
+    int splits = 0;
+    for (int pass = 0; pass < kPasses; ++pass) {
+      bool changed = false;
+      for (int l = 0; l < d_.loop_count(); ++l) {
+        const std::vector<std::pair<int, int>> pieces = coarsening_[l].pieces();
+        const int count = static_cast<int>(pieces.size());
+        for (int k = 0; k < count && !changed; ++k) {
+          const int before = pieces[wrap(k - 1, count)].first, corner = pieces[k].first, after = pieces[k].second;
+          const Vec3 &p = point(l, before), &q = point(l, corner), &r = point(l, after);
+          if (signed_angle(q - p, r - q) < kCornerTurn && turn_at(d_.loops[l].points, corner) < kCornerTurn) continue;
+          if (orient2d(p, q, r) <= 0 || !other_loop_in_circle(l, p, q, r)) continue;
+          // The longer piece first; the other when the longer cannot be split.
+          const bool longer_before = distance(p, q) >= distance(q, r);
+          const bool split = longer_before ? coarsening_[l].split(before, corner, 2) || coarsening_[l].split(corner, after, 2)
+                                           : coarsening_[l].split(corner, after, 2) || coarsening_[l].split(before, corner, 2);
+          splits += split ? 1 : 0;
+          changed = split || changed;
+        }
+      }
+      if (!changed) break;
+    }
+    return splits;
+  }
+
+  // Whether a point of a loop other than `loop` lies strictly inside the circle
+  // through p, q and r (counter-clockwise).
+  bool other_loop_in_circle(int loop, const Vec3& p, const Vec3& q, const Vec3& r) const {
+    const double ax = p.x - q.x, ay = p.y - q.y, bx = r.x - q.x, by = r.y - q.y;
+    const double twice_area = 2 * (ax * by - ay * bx);
+    const double ux = (by * (ax * ax + ay * ay) - ay * (bx * bx + by * by)) / twice_area;
+    const double uy = (ax * (bx * bx + by * by) - bx * (ax * ax + ay * ay)) / twice_area;
+    const Vec3 centre{q.x + ux, q.y + uy, 0};
+    const double radius = std::hypot(ux, uy);
+    for (int m = 0; m < d_.loop_count(); ++m) {
+      if (m == loop) continue;
+      for (int i = 0; i < loop_size(m); ++i) {
+        if (distance(centre, point(m, i)) < radius * (1 - 1e-9)) return true;
+      }
+    }
+    return false;
+  }
 
   // Pieces much longer than the gap in front of them (the distance from their middle
   // to the rest of the boundary, their neighbouring pieces left out) are split, so the
@@ -469,6 +517,7 @@ class Decomposer {
     }
   }
 
+  int corner_splits_ = 0;
   const PlanarDomain& d_;
   std::vector<LoopCoarsening> coarsening_;
 };
@@ -562,9 +611,9 @@ std::vector<int> side_nodes(const PlanarDomain& domain, const FaceDecomposition&
   return nodes;
 }
 
-FaceDecomposition decompose_domain(const PlanarDomain& domain) {
+FaceDecomposition decompose_domain(const PlanarDomain& domain, const DecompositionOptions& options) {
   check_planar_domain(domain);
-  return Decomposer(domain).run();
+  return Decomposer(domain, options).run();
 }
 
 }  // namespace tquad

@@ -62,6 +62,19 @@ struct FaceDecomposition {
   std::vector<BoundaryPiece> pieces;
   std::vector<CutCurve> cuts;
   std::vector<DomainPatch> patches;
+  int corner_splits = 0;  // pieces split by DecompositionOptions::clear_corner_ears
+};
+
+struct DecompositionOptions {
+  // At a corner turning at least 60 degrees (interior angle 120 or less), another
+  // loop's point inside the circle through the corner and its two coarse neighbours
+  // makes the smallest-angle flips fan cuts into the corner: a 90-degree plate corner
+  // of as1-tu-203.stp (face 85) ended in 4 patches, quads of 5.7 to 15.7 degrees.
+  // With this set, the longer piece next to such a corner is split (up to 8 times
+  // per corner) until that circle is empty, so the corner's ear stays one triangle.
+  // It also moves cuts elsewhere, sometimes for the worse (as1 faces 66 and 145: worst
+  // corner 0.458 to 0.320), so callers mesh both and keep the better.
+  bool clear_corner_ears = false;
 };
 
 // Throws InputError, naming the loop and point or segment, when a loop has fewer than
@@ -72,7 +85,7 @@ struct FaceDecomposition {
 void check_planar_domain(const PlanarDomain& domain);
 
 // Checks the domain (check_planar_domain), then decomposes it.
-FaceDecomposition decompose_domain(const PlanarDomain& domain);
+FaceDecomposition decompose_domain(const PlanarDomain& domain, const DecompositionOptions& options = {});
 
 // The domain node ids along a patch side, from its start to its end; `cut_nodes[c]`
 // holds cut c's nodes from `from` to `to`.

@@ -157,17 +157,42 @@ class FaceChart {
   std::vector<Vec3> uv_;
 };
 
+// The face meshed on its decomposition with corner ears cleared; nothing when that
+// changes no piece (the same decomposition as the plain one).
+std::optional<FaceMeshResult> mesh_with_corner_ears_cleared(const FaceChart& chart, double edge_size,
+                                                           const MeshOptions& options) {
+  DecompositionOptions cleared;
+  cleared.clear_corner_ears = true;
+  const FaceDecomposition decomposition = decompose_domain(chart.domain(), cleared);
+  if (decomposition.corner_splits == 0) return std::nullopt;
+  return chart.mesh(decomposition, edge_size, options);
+}
+
 }  // namespace
 
 FaceMeshResult mesh_face_decomposed(const TopoDS_Face& face, int face_index, const FaceBoundary& b,
                                     const std::vector<Vec3>& nodes, int vertex_nodes, double edge_size,
                                     const MeshOptions& options) {
   const FaceChart chart(face, face_index, b, nodes, vertex_nodes);
+  std::optional<FaceMeshResult> best;
   try {
-    return chart.mesh(decompose_domain(chart.domain()), edge_size, options);
+    best = chart.mesh(decompose_domain(chart.domain()), edge_size, options);
   } catch (const InputError& e) {
+    // The decomposition with its corner ears cleared below may still mesh the face.
+    try {
+      return mesh_with_corner_ears_cleared(chart, edge_size, options).value();
+    } catch (const std::exception&) {
+    }
     throw InputError(chart.name() + " (decomposed into patches): " + e.what());
   }
+  try {
+    // Either may be the better (DecompositionOptions::clear_corner_ears).
+    if (auto cleared = mesh_with_corner_ears_cleared(chart, edge_size, options); cleared && better_face_mesh(*cleared, *best)) {
+      best = std::move(cleared);
+    }
+  } catch (const InputError&) {
+  }
+  return std::move(*best);
 }
 
 std::optional<FaceMeshResult> mesh_face_disk(const TopoDS_Face& face, int face_index, const FaceBoundary& b,
