@@ -190,7 +190,7 @@ FaceMeshResult mesh_face_decomposed(const TopoDS_Face& face, int face_index, con
     if (auto cleared = mesh_with_corner_ears_cleared(chart, edge_size, options); cleared && better_face_mesh(*cleared, *best)) {
       best = std::move(cleared);
     }
-  } catch (const InputError&) {
+  } catch (const std::exception&) {  // the plain decomposition's mesh stays, as in face_route
   }
   return std::move(*best);
 }
