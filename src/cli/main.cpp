@@ -99,8 +99,8 @@ int run_cli(int argc, char** argv) {
       ->type_name("S")
       ->check(CLI::Range(tquad::kMinReadSeconds, tquad::kMaxReadSeconds));
   mesh->add_flag("!--no-smooth", command.shape.smooth,
-                 "CAD input: keep the template nodes where they are (no smoothing on the\n"
-                 "surface)");
+                 "Keep the template nodes where they are: no smoothing of CAD faces on their\n"
+                 "surfaces, nor of a planar boundary region in its plane");
   mesh->add_flag("--allow-inverted", command.shape.allow_inverted,
                  "CAD input: keep a face whose mesh still has inverted quads after repair\n"
                  "(reported) instead of refusing it");

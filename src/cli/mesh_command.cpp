@@ -19,6 +19,7 @@
 #include "core/planar_self_intersection.h"
 #include "core/quality.h"
 #include "core/shape_mesh.h"
+#include "core/smoothing.h"
 #include "io/atomic_file_writer.h"
 #include "io/boundary_json_reader.h"
 #include "io/inp_writer.h"
@@ -142,6 +143,7 @@ ShapeMesh mesh_boundary_input(const MeshCommand& command, OutputFormat format, Q
   Vec3 normal;
   const std::optional<Vec3> reference =
       planar_normal(loop.points, normal) ? std::optional<Vec3>(normal) : std::nullopt;
+  if (command.shape.smooth) smooth_planar_region(mesh, boundary_points, reference);
   if (format == OutputFormat::svg) {
     // The figure draws the template tree's cuts, which only the QuadMesh carries.
     SvgOptions svg;

@@ -1,4 +1,7 @@
 #include "core/smoothing.h"
+#include <string>
+#include <stdexcept>
+#include "core/mesh_validation.h"
 
 #include <algorithm>
 #include <array>
@@ -189,6 +192,39 @@ SmoothingResult smooth_planar_mesh(QuadMesh& mesh, int fixed, int& merged, const
     return true;
   };
   return smooth_mesh(mesh.quads, fixed, param, mesh.nodes, normal, in_plane, options);
+}
+
+SmoothingResult smooth_mesh_in_plane(QuadMesh& mesh, int fixed, const Vec3& normal, int& merged,
+                                     const SmoothingOptions& options) {
+  merged = 0;
+  if (fixed <= 0 || fixed >= static_cast<int>(mesh.nodes.size())) return {};
+  // A right-handed frame (e1, e2, normal) at the first boundary node.
+  const Vec3 origin = mesh.nodes[0];
+  const Vec3 helper = std::abs(normal.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+  Vec3 e1 = cross(helper, normal);
+  e1 = (1.0 / norm(e1)) * e1;
+  const Vec3 e2 = cross(normal, e1);
+  QuadMesh local = mesh;
+  for (Vec3& p : local.nodes) {
+    const Vec3 d = p - origin;
+    p = {dot(d, e1), dot(d, e2), 0};
+  }
+  const SmoothingResult result = smooth_planar_mesh(local, fixed, merged, options);
+  std::vector<Vec3> nodes(mesh.nodes.begin(), mesh.nodes.begin() + fixed);
+  for (std::size_t i = fixed; i < local.nodes.size(); ++i) {
+    nodes.push_back(origin + local.nodes[i].x * e1 + local.nodes[i].y * e2);
+  }
+  mesh.nodes = std::move(nodes);
+  mesh.quads = std::move(local.quads);
+  return result;
+}
+
+void smooth_planar_region(QuadMesh& mesh, int boundary_points, const std::optional<Vec3>& plane_normal) {
+  if (!plane_normal) return;
+  int merged = 0;
+  smooth_mesh_in_plane(mesh, boundary_points, *plane_normal, merged);
+  const std::string problem = check_disk_mesh(mesh, boundary_points);
+  if (!problem.empty()) throw std::logic_error("the smoothed mesh is invalid: " + problem);
 }
 
 }  // namespace tquad

@@ -18,6 +18,8 @@
 //     down to 1/64 of it).
 #pragma once
 
+#include <optional>
+
 #include <functional>
 #include <vector>
 
@@ -57,5 +59,17 @@ SmoothingResult smooth_mesh(const std::vector<Quad>& quads, int fixed, std::vect
 // (doublets.h), then smooth_mesh with nodes [0, fixed) kept. Returns the smoothing's
 // result; `merged` receives the doublets removed.
 SmoothingResult smooth_planar_mesh(QuadMesh& mesh, int fixed, int& merged, const SmoothingOptions& options = {});
+
+// The same for a planar region in any plane: boundary nodes [0, fixed) on the plane
+// with unit normal `normal`, quads counter-clockwise around it. Smoothed in the
+// plane's own frame; the boundary nodes keep their coordinates bit for bit.
+SmoothingResult smooth_mesh_in_plane(QuadMesh& mesh, int fixed, const Vec3& normal, int& merged,
+                                     const SmoothingOptions& options = {});
+
+// A boundary region's mesh (boundary_points first) smoothed in its plane when the
+// loop is planar (plane_normal set), then checked again (check_disk_mesh; a failure
+// is std::logic_error, the mesher's fault). A curved 3D loop has no surface to keep
+// the nodes on: left as meshed. The CLI and the Python module both call this.
+void smooth_planar_region(QuadMesh& mesh, int boundary_points, const std::optional<Vec3>& plane_normal);
 
 }  // namespace tquad

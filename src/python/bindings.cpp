@@ -15,6 +15,7 @@
 #include "core/mesh_validation.h"
 #include "core/planar_self_intersection.h"
 #include "core/quality.h"
+#include "core/smoothing.h"
 #include "io/shape_mesh_check.h"
 #include "core/shape_mesh.h"
 #include "occ/shape_mesher.h"
@@ -104,7 +105,7 @@ MeshOptions template_options(int t4_ratio, int t5_cut_edges, long long max_quads
 
 py::dict mesh_boundary_binding(const py::array_t<double, py::array::c_style | py::array::forcecast>& points,
                                const std::vector<int>& corners, int t4_ratio, int t5_cut_edges,
-                               long long max_quads) {
+                               long long max_quads, bool smooth) {
   if (points.ndim() != 2 || (points.shape(1) != 2 && points.shape(1) != 3)) {
     throw InputError("points must be an N x 3 (or N x 2) array of coordinates");
   }
@@ -124,6 +125,7 @@ py::dict mesh_boundary_binding(const py::array_t<double, py::array::c_style | py
     if (!problem.empty()) throw std::logic_error("the mesh is invalid: " + problem);
     Vec3 normal;
     const bool planar = planar_normal(loop.points, normal);
+    if (smooth) smooth_planar_region(mesh, static_cast<int>(loop.points.size()), planar ? std::optional<Vec3>(normal) : std::nullopt);
     shape = single_face_mesh(std::move(mesh));
     quality = measure_mesh_quality(shape, planar ? std::optional<Vec3>(normal) : std::nullopt);
   }
@@ -230,7 +232,7 @@ PYBIND11_MODULE(_core, m) {
   // Cancelled from the progress callback: nothing is returned.
   py::register_exception<tquad::MeshCancelled>(m, "Cancelled", PyExc_RuntimeError);
   m.def("mesh_boundary", &tquad::mesh_boundary_binding, py::arg("points"), py::arg("corners"),
-        py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"));
+        py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("smooth"));
   m.def("mesh_shape", &tquad::mesh_shape_binding, py::arg("brep_text_or_path"), py::arg("size"),
         py::arg("faces"), py::arg("corners"), py::arg("keep_going"), py::arg("allow_inverted"),
         py::arg("threads"), py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("smooth"),

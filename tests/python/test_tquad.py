@@ -186,5 +186,42 @@ class QualityFieldsTest(unittest.TestCase):
         np.testing.assert_array_equal(cells["lee_lo"][0], mesh.lee_lo)
 
 
+class BoundarySmoothingTest(unittest.TestCase):
+    """A planar boundary region is smoothed in its plane by default."""
+
+    def _plate(self):
+        import json
+        with open(os.path.join(REPO, "resources", "boundaries", "plate_t2.json")) as f:
+            data = json.load(f)
+        return np.array(data["points"], dtype=float), data["corners"]
+
+    def test_smoothing_keeps_the_boundary_and_never_lowers_the_worst(self):
+        points, corners = self._plate()
+        raw = tquad.mesh_boundary(points, corners, smooth=False)
+        smoothed = tquad.mesh_boundary(points, corners)
+        n = len(points)
+        np.testing.assert_array_equal(smoothed.nodes[:n], raw.nodes[:n])
+        self.assertGreaterEqual(smoothed.quality["scaled_jacobian"]["min"], raw.quality["scaled_jacobian"]["min"])
+        self.assertEqual(smoothed.quality["inverted"], 0)
+        self.assertFalse(np.array_equal(smoothed.nodes, raw.nodes), "some interior node moved")
+        print(f"[ quality  ] plate_t2: scaled Jacobian min {raw.quality['scaled_jacobian']['min']:.3f} "
+              f"-> {smoothed.quality['scaled_jacobian']['min']:.3f} smoothed")
+
+    def test_a_tilted_plane_is_smoothed_in_that_plane(self):
+        points, corners = self._plate()
+        flat = np.column_stack([points[:, 0], points[:, 1], np.zeros(len(points))]) if points.shape[1] == 2 else points
+        angle = 0.7  # about the x axis, then shifted
+        rotation = np.array([[1, 0, 0], [0, math.cos(angle), -math.sin(angle)], [0, math.sin(angle), math.cos(angle)]])
+        tilted = flat @ rotation.T + np.array([3.0, -2.0, 5.0])
+        mesh = tquad.mesh_boundary(tilted, corners)
+        normal = rotation @ np.array([0.0, 0.0, 1.0])
+        offsets = (mesh.nodes - tilted[0]) @ normal
+        self.assertLess(np.abs(offsets).max(), 1e-9, "nodes left the plane")
+        reference = tquad.mesh_boundary(flat, corners)
+        self.assertEqual(len(mesh.quads), len(reference.quads))
+        self.assertAlmostEqual(mesh.quality["scaled_jacobian"]["min"], reference.quality["scaled_jacobian"]["min"],
+                               places=4)
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -86,7 +86,7 @@ class Mesh:
 
 
 def mesh_boundary(points, corners: Sequence[int], *, t4_ratio: int = 2,
-                  t5_cut_edges: int = 0, max_quads: int = _MAX_QUADS) -> Mesh:
+                  t5_cut_edges: int = 0, max_quads: int = _MAX_QUADS, smooth: bool = True) -> Mesh:
     """Mesh the region inside a closed boundary loop.
 
     Args:
@@ -97,13 +97,16 @@ def mesh_boundary(points, corners: Sequence[int], *, t4_ratio: int = 2,
         t4_ratio: the k of the T4 test k C <= A and k C <= B (at least 2).
         t5_cut_edges: edges on the cut of a two-curve region; 0 from the geometry.
         max_quads: refuse a mesh larger than this.
+        smooth: smooth a planar region's interior nodes in its plane (doublets
+            merged, no node's worst corner lowered); a curved 3D loop is left as
+            meshed. The boundary points are kept bit for bit either way.
 
     Raises:
         ValueError: the boundary cannot be meshed (the message says why and where).
     """
     array = np.asarray(points, dtype=np.float64)
     return Mesh(_core.mesh_boundary(array, [int(c) for c in corners], int(t4_ratio),
-                                    int(t5_cut_edges), int(max_quads)))
+                                    int(t5_cut_edges), int(max_quads), bool(smooth)))
 
 
 def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,

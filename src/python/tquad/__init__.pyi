@@ -25,7 +25,8 @@ class Mesh:
     def face_quads(self, face: int) -> np.ndarray: ...
 
 def mesh_boundary(points: Union[np.ndarray, Sequence[Sequence[float]]], corners: Sequence[int], *,
-                  t4_ratio: int = ..., t5_cut_edges: int = ..., max_quads: int = ...) -> Mesh: ...
+                  t4_ratio: int = ..., t5_cut_edges: int = ..., max_quads: int = ...,
+                  smooth: bool = ...) -> Mesh: ...
 
 def mesh_shape(brep_text_or_path: str, *, size: float = ..., faces: Optional[Iterable[int]] = ...,
                corners: Optional[Mapping[int, Sequence[int]]] = ..., keep_going: bool = ...,
