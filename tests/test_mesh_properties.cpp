@@ -7,12 +7,14 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <random>
 
 #include "boundary_generators.h"
 #include "core/mesh_validation.h"
 #include "core/mesher.h"
 #include "core/planar_self_intersection.h"
 #include "core/quality.h"
+#include "core/smoothing.h"
 
 namespace tquad {
 namespace {
@@ -83,6 +85,36 @@ TEST(MeshProperties, GeneratedBoundariesGiveValidMeshes) {
   convex_new_corner.print("convex planar, corner added on side:");
   nonconvex.print("mildly non-convex planar:");
   curved.print("curved 3D (quads' own normals):");
+}
+
+TEST(MeshProperties, LopsidedLensesHaveNoInvertedQuad) {
+  // Two-curve regions with very unequal counts (21 and 3, 24 and 2, ...), both arcs
+  // bulging: each is meshed, smoothed in its plane as the CLI and Python do, and must
+  // keep every boundary point and have no inverted quad.
+  const int counts[][2] = {{21, 3}, {24, 2}, {17, 3}, {3, 21}, {2, 24}, {3, 17}, {19, 5}, {30, 2}, {2, 30}, {15, 1}, {25, 3}};
+  const Vec3 up{0, 0, 1};
+  std::mt19937 rng(1);
+  Tally tally;
+  for (const auto& [a, b] : counts) {
+    for (double first : {0.1, 0.2, 0.35}) {
+      for (double second : {0.1, 0.2, 0.35}) {
+        const std::vector<testing::Curve> sides = {testing::arc({-1, 0, 0}, {1, 0, 0}, -first),
+                                                   testing::arc({1, 0, 0}, {-1, 0, 0}, -second)};
+        std::vector<std::vector<double>> params;
+        for (int n : {a, b}) params.push_back(testing::spacing_params(n, testing::Spacing::Uniform, 1.0, rng));
+        const BoundaryLoop loop = testing::sample_loop(sides, {a, b}, params);
+        const std::string what = "lens " + std::to_string(a) + "/" + std::to_string(b) + " sagittas " +
+                                 std::to_string(first) + ", " + std::to_string(second);
+        QuadMesh mesh = mesh_boundary(loop, {});
+        smooth_planar_region(mesh, static_cast<int>(loop.points.size()), up);
+        for (std::size_t i = 0; i < loop.points.size(); ++i) ASSERT_TRUE(mesh.nodes[i] == loop.points[i]) << what;
+        const QualitySummary q = summarize_quality(mesh, up);
+        EXPECT_EQ(q.inverted, 0) << what;
+        tally.update(q, what);
+      }
+    }
+  }
+  tally.print("lopsided two-curve lenses");
 }
 
 TEST(MeshProperties, MeshesAreInvariantUnderScalingAndTranslation) {
