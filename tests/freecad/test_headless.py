@@ -13,6 +13,14 @@ import FreeCAD
 import Part
 
 
+def _add_part(doc, shape, name):
+    """A Part feature holding `shape`, recomputed."""
+    obj = doc.addObject("Part::Feature", name)
+    obj.Shape = shape
+    doc.recompute()
+    return obj
+
+
 def _tquad():
     import tquad
     return tquad
@@ -68,10 +76,7 @@ class MeshObjectTest(unittest.TestCase):
         FreeCAD.closeDocument(self.doc.Name)
 
     def _part(self, shape, name):
-        obj = self.doc.addObject("Part::Feature", name)
-        obj.Shape = shape
-        self.doc.recompute()
-        return obj
+        return _add_part(self.doc, shape, name)
 
     def _filleted_box(self):
         box = Part.makeBox(40, 30, 20)
@@ -293,10 +298,7 @@ class BadInputInFreeCadTest(unittest.TestCase):
         FreeCAD.closeDocument(self.doc.Name)
 
     def _part(self, shape, name):
-        obj = self.doc.addObject("Part::Feature", name)
-        obj.Shape = shape
-        self.doc.recompute()
-        return obj
+        return _add_part(self.doc, shape, name)
 
     def _refused(self, part, expect, **options):
         from freecad.templatequad import make_mesh

@@ -13,16 +13,7 @@ import tquad
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bad_input_matrix as matrix  # noqa: E402
-
-
-def _edge_uses(quads):
-    """How many quads use each edge (a sorted node pair)."""
-    uses = {}
-    for quad in quads.tolist():
-        for i in range(4):
-            edge = tuple(sorted((quad[i], quad[(i + 1) % 4])))
-            uses[edge] = uses.get(edge, 0) + 1
-    return uses
+from test_tquad import edge_uses as _edge_uses  # noqa: E402
 
 
 class BadInputMatrixTest(unittest.TestCase):
