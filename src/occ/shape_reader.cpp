@@ -9,11 +9,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <iterator>
 #include <sstream>
+#include <vector>
 
 #include "core/input_error.h"
 
@@ -82,10 +85,12 @@ TopoDS_Shape read_with(Reader& reader, const std::string& path, const char* form
 }
 
 // BRepTools::Read prints to stdout when the text is not a BREP shape, and on a file
-// cut short it can throw anything or loop for ever. So the text is checked first: it
-// starts with the topology header within its first lines, and after "TShapes N" come
-// N shape records, each ending with a line that ends in '*', then the root shape
-// reference ("+1 0"). Returns what is wrong, or "".
+// cut short or a damaged count it can throw anything or loop for ever. So the text is
+// checked first: it starts with the topology header within its first lines; every
+// section ("Curves 15", "TShapes 47", ...) declares no more entries than lines follow
+// it (each entry takes at least one line: a count edited to 10^9 made the reader loop
+// until its deadline); after "TShapes N" come N shape records, each ending with a line
+// that ends in '*', then the root shape reference ("+1 0"). Returns what is wrong, or "".
 std::string brep_problem(std::istream& in) {
   std::string line;
   bool header = false;
@@ -96,21 +101,49 @@ std::string brep_problem(std::istream& in) {
     }
   }
   if (!header) return "is not a BREP file (no topology header)";
+  struct Section {
+    std::string name;
+    long long entries;
+    long long line;
+  };
+  static const char* const kSections[] = {"Locations",      "Curve2ds",  "Curves",
+                                          "Polygon3D",      "PolygonOnTriangulations",
+                                          "Polygon2D",      "Surfaces",  "Triangulations",
+                                          "TShapes"};
+  std::vector<Section> sections;
+  long long lines = 0;
   long long shapes = -1;
-  while (std::getline(in, line)) {
-    if (line.rfind("TShapes ", 0) == 0) {
-      shapes = std::atoll(line.c_str() + 8);
-      break;
-    }
-  }
-  if (shapes < 0) return "is cut short or damaged (no TShapes section)";
   long long records = 0;
   std::string last;
   while (std::getline(in, line)) {
+    ++lines;
     while (!line.empty() && (line.back() == ' ' || line.back() == '\r')) line.pop_back();
     if (line.empty()) continue;
-    if (line.back() == '*') ++records;
-    last = line;
+    if (shapes >= 0) {
+      if (line.back() == '*') ++records;
+      last = line;
+      continue;
+    }
+    for (const char* name : kSections) {
+      const std::size_t n = std::strlen(name);
+      if (line.size() <= n + 1 || line.compare(0, n, name) != 0 || line[n] != ' ') continue;
+      const char* digits = line.c_str() + n + 1;
+      char* end = nullptr;
+      errno = 0;
+      const long long entries = std::strtoll(digits, &end, 10);
+      if (end == digits || entries < 0 || errno == ERANGE) {
+        return "is damaged (section '" + line + "' has no valid count)";
+      }
+      sections.push_back({name, entries, lines});
+      if (std::strcmp(name, "TShapes") == 0) shapes = entries;
+    }
+  }
+  if (shapes < 0) return "is cut short or damaged (no TShapes section)";
+  for (const Section& section : sections) {
+    if (section.entries > lines - section.line) {
+      return "is damaged (section " + section.name + " declares " + std::to_string(section.entries) +
+             " entries, but only " + std::to_string(lines - section.line) + " lines follow)";
+    }
   }
   if (records < shapes) {
     return "is cut short (" + std::to_string(records) + " of " + std::to_string(shapes) + " shapes)";
@@ -127,6 +160,10 @@ TopoDS_Shape read_checked_brep(std::istream& in, const std::string& what) {
   std::streambuf* saved = std::cout.rdbuf();
   std::ostringstream discarded;
   std::cout.rdbuf(discarded.rdbuf());
+  // A damaged number puts the stream in a failed state, and OpenCASCADE's reader goes
+  // on reading from it: counts it never received (a B-spline's poles, a polygon's
+  // nodes) then run loops of up to 2^31 failed reads. The first failed read throws.
+  in.exceptions(std::ios::failbit | std::ios::badbit);
   try {
     BRepTools::Read(shape, in, builder);
   } catch (...) {
