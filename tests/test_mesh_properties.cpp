@@ -50,6 +50,7 @@ bool added_a_corner(const QuadMesh& mesh, const BoundaryLoop& loop) {
 
 TEST(MeshProperties, GeneratedBoundariesGiveValidMeshes) {
   Tally convex, convex_new_corner, nonconvex, curved;
+  Tally convex_smoothed, nonconvex_smoothed;  // as the CLI and the Python module give them
   for (int i = 0; i < kCases; ++i) {
     const testing::GeneratedCase c = testing::generated_case(i);
     const int n = static_cast<int>(c.loop.points.size());
@@ -80,11 +81,27 @@ TEST(MeshProperties, GeneratedBoundariesGiveValidMeshes) {
     } else {
       curved.update(q, where);
     }
+    if (c.planar) {
+      // Smoothing (with its untangling) keeps the boundary and a valid mesh
+      // (smooth_planar_region checks it) and never folds a convex region's quad.
+      QuadMesh smoothed = mesh;
+      ASSERT_NO_THROW(smooth_planar_region(smoothed, n, normal)) << where;
+      for (int p = 0; p < n; ++p) ASSERT_TRUE(smoothed.nodes[p] == c.loop.points[p]) << where;
+      const QualitySummary after = summarize_quality(smoothed, normal);
+      if (c.convex_planar) {
+        ASSERT_EQ(after.inverted, 0) << where << " after smoothing";
+        convex_smoothed.update(after, where);
+      } else {
+        nonconvex_smoothed.update(after, where);
+      }
+    }
   }
   convex.print("convex planar:");
   convex_new_corner.print("convex planar, corner added on side:");
   nonconvex.print("mildly non-convex planar:");
   curved.print("curved 3D (quads' own normals):");
+  convex_smoothed.print("convex planar, smoothed:");
+  nonconvex_smoothed.print("mildly non-convex planar, smoothed:");
 }
 
 TEST(MeshProperties, LopsidedLensesHaveNoInvertedQuad) {

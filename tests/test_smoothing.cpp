@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/area_untangling.h"
 #include "core/decomposed_mesher.h"
 #include "core/doublets.h"
 #include "core/hole_rings.h"
@@ -71,11 +72,81 @@ TEST(Smoothing, MovesAnInteriorNodeOffAStraightAngleAndNeverLowersTheWorst) {
   int merged = 0;
   const SmoothingResult r = smooth_planar_mesh(mesh, 8, merged);
   EXPECT_EQ(merged, 0);
-  EXPECT_GT(r.moves, 0);
+  // (1.9, 1.8) folds the corner at (2, 1): the untangling moves it first.
+  EXPECT_GT(r.untangling_moves, 0);
   const double after = summarize_quality(mesh, kUp).scaled_jacobian.min;
   EXPECT_GT(after, before);
   EXPECT_GT(after, 0.95) << "the middle node goes to the centre";
   for (int i = 0; i < 8; ++i) EXPECT_EQ(mesh.nodes[i].z, 0.0);
+}
+
+// A 4 x 4 grid on the unit square: boundary nodes 0..11 counter-clockwise from
+// (0, 0), interior nodes 12..15 at (1/4 + k/2 ...) below.
+struct Grid {
+  std::vector<Vec3> nodes;
+  std::vector<Quad> quads;
+};
+Grid four_by_four() {
+  Grid g;
+  int id[5][5];
+  for (int i = 0; i <= 4; ++i) {
+    for (int j = 0; j <= 4; ++j) id[i][j] = -1;
+  }
+  // Boundary first, counter-clockwise.
+  for (int k = 0; k < 4; ++k) id[k][0] = static_cast<int>(g.nodes.size()), g.nodes.push_back({k / 4.0, 0, 0});
+  for (int k = 0; k < 4; ++k) id[4][k] = static_cast<int>(g.nodes.size()), g.nodes.push_back({1, k / 4.0, 0});
+  for (int k = 4; k > 0; --k) id[k][4] = static_cast<int>(g.nodes.size()), g.nodes.push_back({k / 4.0, 1, 0});
+  for (int k = 4; k > 0; --k) id[0][k] = static_cast<int>(g.nodes.size()), g.nodes.push_back({0, k / 4.0, 0});
+  for (int i = 1; i < 4; ++i) {
+    for (int j = 1; j < 4; ++j) id[i][j] = static_cast<int>(g.nodes.size()), g.nodes.push_back({i / 4.0, j / 4.0, 0});
+  }
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) g.quads.push_back({id[i][j], id[i + 1][j], id[i + 1][j + 1], id[i][j + 1]});
+  }
+  return g;
+}
+
+TEST(AreaUntangling, UnfoldsAGridWhoseInteriorNodesWereThrownAcrossIt) {
+  Grid g = four_by_four();
+  const int fixed = 16;
+  // Interior nodes mirrored through the centre: every interior corner folds.
+  for (int n = fixed; n < static_cast<int>(g.nodes.size()); ++n) g.nodes[n] = Vec3{1, 1, 0} - g.nodes[n];
+  g.nodes[fixed + 4] = {0.9, 0.1, 0};  // the centre node thrown to a corner
+  const std::vector<Vec3> boundary(g.nodes.begin(), g.nodes.begin() + fixed);
+  ASSERT_GT(inverted_corners(g.quads, g.nodes, 1.0), 0);
+  int placed = 0;
+  const AreaUntanglingResult r = untangle_corner_areas(g.quads, fixed, g.nodes, 1.0, [&](int n, const Vec3&) {
+    EXPECT_GE(n, fixed);
+    ++placed;
+    return true;
+  });
+  EXPECT_GT(r.inverted_before, 0);
+  EXPECT_EQ(r.inverted_after, 0);
+  EXPECT_EQ(inverted_corners(g.quads, g.nodes, 1.0), 0);
+  EXPECT_EQ(placed, r.moves);
+  for (int n = 0; n < fixed; ++n) EXPECT_TRUE(g.nodes[n] == boundary[n]) << n;
+}
+
+TEST(AreaUntangling, RefusedPlacesAreNotTakenAndAFoldItCannotUndoIsLeftAsItWas) {
+  Grid g = four_by_four();
+  const int fixed = 16;
+  g.nodes[fixed + 4] = {0.9, 0.1, 0};
+  const std::vector<Vec3> before = g.nodes;
+  // Every place refused: nothing moves.
+  AreaUntanglingResult r = untangle_corner_areas(g.quads, fixed, g.nodes, 1.0, [](int, const Vec3&) { return false; });
+  EXPECT_EQ(r.moves, 0);
+  EXPECT_EQ(r.inverted_after, r.inverted_before);
+  for (std::size_t n = 0; n < g.nodes.size(); ++n) EXPECT_TRUE(g.nodes[n] == before[n]) << n;
+  // A boundary node pushed inside the grid (fixed, so the fold stays): the nodes
+  // that moved trying go back.
+  g.nodes[2] = {0.5, 0.6, 0};
+  const std::vector<Vec3> folded = g.nodes;
+  r = untangle_corner_areas(g.quads, fixed, g.nodes, 1.0, [](int, const Vec3&) { return true; });
+  EXPECT_GT(r.inverted_after, 0);
+  EXPECT_LE(r.inverted_after, r.inverted_before);
+  if (r.inverted_after == r.inverted_before) {
+    for (std::size_t n = 0; n < g.nodes.size(); ++n) EXPECT_TRUE(g.nodes[n] == folded[n]) << n;
+  }
 }
 
 TEST(HoleRings, AHoleGetsMappedRingsAndNoFanOnItsRim) {

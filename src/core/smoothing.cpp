@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 
+#include "core/area_untangling.h"
 #include "core/doublets.h"
 #include "core/node_adjacency.h"
 #include "core/quality.h"
@@ -175,11 +176,71 @@ class Smoother {
 
 }  // namespace
 
+namespace {
+
+// +1 when the quads run counter-clockwise in their mesh coordinates (most of their
+// area), -1 when clockwise, 0 when that cannot be told.
+double orientation_in_coordinates(const std::vector<Quad>& quads, const std::vector<Vec3>& param) {
+  double area = 0;
+  for (const Quad& q : quads) {
+    const Vec3 d1 = param[q[2]] - param[q[0]], d2 = param[q[3]] - param[q[1]];
+    area += d1.x * d2.y - d1.y * d2.x;
+  }
+  return area > 0 ? 1.0 : area < 0 ? -1.0 : 0.0;
+}
+
+}  // namespace
+
+namespace {
+
+// Corners whose scaled Jacobian against the surface normals (each quad's own where
+// the normal is singular) is below -kInvertedBelow: inverted where the user sees them.
+int inverted_on_surface(const std::vector<Quad>& quads, const std::vector<Vec3>& position,
+                        const std::vector<Vec3>& normal) {
+  int inverted = 0;
+  for (const Quad& q : quads) {
+    const QuadCorners c = quad_corners({position[q[0]], position[q[1]], position[q[2]], position[q[3]]},
+                                       {unit(normal[q[0]]), unit(normal[q[1]]), unit(normal[q[2]]), unit(normal[q[3]])});
+    for (double j : c.jacobian) inverted += j < -kInvertedBelow ? 1 : 0;
+  }
+  return inverted;
+}
+
+// Unfolds what the surface shows inverted (area_untangling.h), in the mesh coordinates;
+// kept only if fewer corners are inverted on the surface after it (a corner folded in
+// (u, v) alone, at a cusp, is no reason to move nodes). Returns the moves kept.
+long long unfold_inverted_corners(const std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param,
+                                  std::vector<Vec3>& position, std::vector<Vec3>& normal, const PlaceNode& place) {
+  const int before = inverted_on_surface(quads, position, normal);
+  const double orientation = orientation_in_coordinates(quads, param);
+  if (before == 0 || orientation == 0) return 0;
+  const std::vector<Vec3> kept_param = param, kept_position = position, kept_normal = normal;
+  const auto place_node = [&](int n, const Vec3& p) {
+    Vec3 moved_position, moved_normal;
+    if (norm(normal[n]) == 0 || !place(p, moved_position, moved_normal) || norm(moved_normal) == 0) return false;
+    position[n] = moved_position;
+    normal[n] = moved_normal;
+    return true;
+  };
+  const AreaUntanglingResult result = untangle_corner_areas(quads, fixed, param, orientation, place_node);
+  if (result.moves > 0 && inverted_on_surface(quads, position, normal) < before) return result.moves;
+  param = kept_param;
+  position = kept_position;
+  normal = kept_normal;
+  return 0;
+}
+
+}  // namespace
+
 SmoothingResult smooth_mesh(const std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param,
                             std::vector<Vec3>& position, std::vector<Vec3>& normal, const PlaceNode& place,
                             const SmoothingOptions& options) {
   if (fixed >= static_cast<int>(param.size())) return {};
-  return Smoother(quads, fixed, param, position, normal, place).run(options);
+  // Folded corners first: the smoother below cannot unfold them.
+  const long long untangling_moves = unfold_inverted_corners(quads, fixed, param, position, normal, place);
+  SmoothingResult result = Smoother(quads, fixed, param, position, normal, place).run(options);
+  result.untangling_moves = untangling_moves;
+  return result;
 }
 
 SmoothingResult smooth_planar_mesh(QuadMesh& mesh, int fixed, int& merged, const SmoothingOptions& options) {

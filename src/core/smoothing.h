@@ -9,7 +9,9 @@
 // Jacobian against the surface normal at each corner's node) does not drop and no quad
 // around it collapses. So the mesh's worst element never gets worse, and a node moves
 // only where that helps its quads. Each pass visits nodes in index order
-// (deterministic: the same mesh for any thread count):
+// (deterministic: the same mesh for any thread count). Folded corners are first
+// unfolded by untangle_corner_areas (area_untangling.h), which the worst-corner rule
+// below cannot do. Then:
 //   - first the mean of its edge neighbours (Laplacian), whole, half or a quarter of
 //     the way; the move is kept if it raises the worst corner there, or keeps it and
 //     raises the sum of those corners;
@@ -42,7 +44,8 @@ struct SmoothingOptions {
 };
 
 struct SmoothingResult {
-  long long moves = 0;  // accepted node moves over all passes
+  long long untangling_moves = 0;  // moves that unfolded corners first (area_untangling.h)
+  long long moves = 0;             // accepted node moves over all passes
   int passes = 0;       // passes run (they stop early when no node moves)
 };
 
