@@ -18,8 +18,14 @@ namespace {
 
 constexpr int kStepsPerSize = 4;
 
-// A move that keeps the worst corner must raise the sum of the corners around the
-// node (up to 12) by this much: smaller gains cost passes and change nothing one sees.
+// A move must raise the worst corner around the node by this much, or keep it and
+// raise the sum of the corners there (up to 12) by kSumGain: smaller gains cost passes
+// and change nothing one sees. With any gain counted, the Laplacian moves rippled
+// through whole O-grid disks (38,000 of cylinder.brep's 106,000 nodes a face at
+// D/400, every pass); with 1e-4, the work there fell 5.7 times, and the 16 parts'
+// minima and means at D/25 and D/100 moved by less than 0.005, except
+// TrimmedSurface.brep at D/25 (min 0.312 -> 0.421).
+constexpr double kWorstGain = 1e-4;
 constexpr double kSumGain = 1e-3;
 
 // The corners whose angle a node decides, summarized: the worst, their sum, and
@@ -31,7 +37,7 @@ struct LocalQuality {
   // Whether this (after a move) is better than `before`.
   bool improves_on(const LocalQuality& before) const {
     if (collapsed > before.collapsed) return false;
-    if (worst > before.worst + 1e-12) return true;
+    if (worst > before.worst + kWorstGain) return true;
     return worst >= before.worst && sum > before.sum + kSumGain;
   }
 };
@@ -57,8 +63,7 @@ class Smoother {
     // with a neighbour that moved (or that moved themselves): most of a mesh (its
     // mapped grids) is left as the templates placed it.
     const int count = static_cast<int>(param_.size());
-    std::vector<char> active(count, 0), next(count, 0);
-    for (int n = fixed_; n < count; ++n) active[n] = local_quality(n).worst < options.good_enough ? 1 : 0;
+    std::vector<char> active = nodes_deciding_corners_below(options.good_enough), next(count, 0);
     for (int pass = 0; pass < options.passes; ++pass) {
       long long moves = 0;
       for (int n = fixed_; n < count; ++n) {
@@ -85,6 +90,23 @@ class Smoother {
   }
 
  private:
+  // Nodes (not fixed) that decide some corner under `threshold`: a corner's angle is
+  // decided by its own node and its two neighbours in the quad. One pass over the
+  // quads, not one per node.
+  std::vector<char> nodes_deciding_corners_below(double threshold) const {
+    std::vector<char> chosen(param_.size(), 0);
+    for (const Quad& q : quads_) {
+      const QuadCorners c = quad_corners({position_[q[0]], position_[q[1]], position_[q[2]], position_[q[3]]},
+                                         {unit_normal_[q[0]], unit_normal_[q[1]], unit_normal_[q[2]], unit_normal_[q[3]]});
+      for (int j = 0; j < 4; ++j) {
+        if (!(c.jacobian[j] < threshold)) continue;
+        chosen[q[j]] = chosen[q[(j + 1) % 4]] = chosen[q[(j + 3) % 4]] = 1;
+      }
+    }
+    std::fill(chosen.begin(), chosen.begin() + std::min<std::size_t>(fixed_, chosen.size()), 0);
+    return chosen;
+  }
+
   LocalQuality local_quality(int n) const {
     LocalQuality local;
     const CompressedLists& around = adjacency_.quads_of;
