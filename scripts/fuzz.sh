@@ -2,10 +2,12 @@
 # Builds the libFuzzer targets with clang, AddressSanitizer and UndefinedBehaviorSanitizer
 # into build-fuzz/ and runs each for RUNS executions (default 1,000,000) from its seed
 # corpus in fuzz/corpus/<target> (the corpus grows in build-fuzz/corpus/<target>).
-# The random seed is fixed (1), so a run from a fresh clone, as in CI, is repeatable.
+# The random seed is FUZZ_SEED (default 1, so a run from a fresh clone, as in CI, is
+# repeatable; long runs that continue a grown corpus take another seed), and a run stops
+# after FUZZ_SECONDS (default: no limit) if RUNS are not done by then.
 # TARGETs default to all four: fuzz_boundary, fuzz_domain, fuzz_brep, fuzz_step.
 #
-#   scripts/fuzz.sh [RUNS [TARGET...]]
+#   [FUZZ_SEED=N] [FUZZ_SECONDS=S] scripts/fuzz.sh [RUNS [TARGET...]]
 set -euo pipefail
 repo_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 runs=${1:-1000000}
@@ -22,7 +24,7 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 mkdir -p "$build/artifacts"
 for target in "${targets[@]}"; do
   mkdir -p "$build/corpus/$target"
-  "$build/bin/$target" -runs="$runs" -seed=1 -timeout=10 -rss_limit_mb=4096 -max_len=65536 -print_final_stats=1 \
+  "$build/bin/$target" -runs="$runs" -seed="${FUZZ_SEED:-1}" -max_total_time="${FUZZ_SECONDS:-0}" -timeout=10 -rss_limit_mb=4096 -max_len=65536 -print_final_stats=1 \
     -artifact_prefix="$build/artifacts/$target-" \
     "$build/corpus/$target" "$repo_dir/fuzz/corpus/$target"
 done
