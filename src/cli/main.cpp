@@ -86,7 +86,11 @@ int run_cli(int argc, char** argv) {
       ->type_name("LIST");
   mesh->add_option("--corners", command.corners,
                    "CAD input: corners of a face's curves, as shape vertex indices\n"
-                   "(0-based), e.g. --corners 3:0,4,7,2 (repeat for more faces)")
+                   "(0-based), e.g. --corners 3:0,4,7,2 (repeat for more faces); or 'best':\n"
+                   "try more corner sets (2, 3 or 4 curves) on every other face without holes,\n"
+                   "or on a boundary file's loop,\n"
+                   "and keep the best worst, then mean, scaled Jacobian (the report's\n"
+                   "corner_search gives the natural choice's beside it)")
       ->type_name("FACE:V1,V2,...");
   mesh->add_flag("--keep-going", command.shape.keep_going,
                  "CAD input: mesh and write the other faces when one is refused, and list\n"

@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "core/input_error.h"
+#include "core/corner_search.h"
 #include "core/mesh_validation.h"
 #include "core/planar_self_intersection.h"
 #include "core/quality.h"
@@ -129,21 +130,35 @@ void print_summary(std::ostream& out, const MeshCommand& command, const ShapeMes
 // The boundary path: one region, face 0; also drawn as SVG on request.
 ShapeMesh mesh_boundary_input(const MeshCommand& command, OutputFormat format, QualitySummary& quality) {
   const BoundaryLoop loop = read_boundary_json(command.input);
+  bool best_corners = false;
+  for (const std::string& spec : command.corners) {
+    if (spec != "best") {
+      throw InputError("--corners '" + spec + "': a boundary file's corners are its \"corners\" list; only "
+                       "--corners best applies to it");
+    }
+    best_corners = true;
+  }
+  const int boundary_points = static_cast<int>(loop.points.size());
+  Vec3 normal;
+  const std::optional<Vec3> reference =
+      planar_normal(loop.points, normal) ? std::optional<Vec3>(normal) : std::nullopt;
   QuadMesh mesh;
+  std::optional<CornerSearch> search;
   try {
-    mesh = mesh_boundary(loop, command.options);
+    if (best_corners) {
+      CornerSearchResult found = mesh_boundary_best_corners(loop, command.options, reference, command.shape.smooth);
+      mesh = std::move(found.mesh);
+      search = found.search;
+    } else {
+      mesh = mesh_boundary(loop, command.options);
+    }
   } catch (const InputError& e) {
     // Core messages name the point / segment / curve; add the file.
     throw InputError(command.input + ": " + e.what());
   }
-  const int boundary_points = static_cast<int>(loop.points.size());
   const std::string problem = check_disk_mesh(mesh, boundary_points);
   if (!problem.empty()) throw std::logic_error("the mesh of " + command.input + " is invalid: " + problem);
-
-  Vec3 normal;
-  const std::optional<Vec3> reference =
-      planar_normal(loop.points, normal) ? std::optional<Vec3>(normal) : std::nullopt;
-  if (command.shape.smooth) smooth_planar_region(mesh, boundary_points, reference);
+  if (command.shape.smooth && !best_corners) smooth_planar_region(mesh, boundary_points, reference);
   if (format == OutputFormat::svg) {
     // The figure draws the template tree's cuts, which only the QuadMesh carries.
     SvgOptions svg;
@@ -158,6 +173,7 @@ ShapeMesh mesh_boundary_input(const MeshCommand& command, OutputFormat format, Q
   }
   // The file writers and the report take a shape's mesh: a boundary input is face 0.
   ShapeMesh shape = single_face_mesh(std::move(mesh));
+  shape.faces[0].corner_search = search;
   quality = measure_mesh_quality(shape, reference);
   return shape;
 }
@@ -187,7 +203,15 @@ ShapeMesh mesh_shape_input(const MeshCommand& command, OutputFormat format, Qual
   ShapeMeshOptions options = command.shape;
   options.templates = command.options;
   if (command.progress) options.progress = progress_printer(err);
-  options.corners = parse_corner_specs(command.corners);
+  std::vector<std::string> corner_specs;
+  for (const std::string& spec : command.corners) {
+    if (spec == "best") {
+      options.best_corners = true;
+    } else {
+      corner_specs.push_back(spec);
+    }
+  }
+  options.corners = parse_corner_specs(corner_specs);
   const ReadShape read = read_shape_isolated(command.input, command.read);
   const TopoDS_Shape& shape = read.shape;
   if (!command.faces.empty()) {

@@ -16,13 +16,16 @@ namespace tquad {
 
 namespace {
 
-// The region of the boundary loop with corners at the given point indices.
+// The region of the boundary loop with corners at the given point indices, in loop
+// order from any of them: a regrouped corner can wrap past the last point (corners
+// 3, 4, 5, 0 of 8 points), and each curve runs forward to the next corner.
 Region loop_region(int point_count, const std::vector<int>& corners) {
   Region region;
   const int k = static_cast<int>(corners.size());
   for (int c = 0; c < k; ++c) {
     const int first = corners[c];
-    const int last = c + 1 < k ? corners[c + 1] : corners[0] + point_count;
+    int last = corners[(c + 1) % k];
+    if (last <= first) last += point_count;
     std::vector<NodeId> curve;
     for (int i = first; i <= last; ++i) curve.push_back(i % point_count);
     region.curves.push_back(std::move(curve));

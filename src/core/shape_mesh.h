@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,11 +12,20 @@
 
 namespace tquad {
 
+// What --corners best did on a face: corner sets tried beyond the natural choice, and
+// the natural and chosen meshes' worst and mean scaled Jacobian (after smoothing).
+struct CornerSearch {
+  int tried = 0;
+  bool changed = false;  // a searched set beat the natural choice
+  double natural_worst = 0, natural_mean = 0, chosen_worst = 0, chosen_mean = 0;
+};
+
 struct FaceMesh {
   int face = 0;               // index of the face in the shape (0-based)
   std::string template_tree;  // e.g. "T2[T0,T0,T1[T0,T0,T0,T0]]"
   std::int64_t first_quad = 0;
   std::int64_t quad_count = 0;
+  std::optional<CornerSearch> corner_search;  // set by --corners best
 };
 
 struct RefusedFace {
@@ -41,7 +51,7 @@ inline ShapeMesh single_face_mesh(QuadMesh&& mesh) {
   ShapeMesh shape;
   shape.nodes = std::move(mesh.nodes);
   shape.quads = std::move(mesh.quads);
-  shape.faces.push_back({0, mesh.template_tree, 0, static_cast<std::int64_t>(shape.quads.size())});
+  shape.faces.push_back({0, mesh.template_tree, 0, static_cast<std::int64_t>(shape.quads.size()), std::nullopt});
   return shape;
 }
 

@@ -32,6 +32,15 @@ nlohmann::ordered_json mesh_report_json(const ShapeMesh& mesh, const QualitySumm
     nlohmann::ordered_json face;
     face["face"] = f.face;
     face["template_tree"] = f.template_tree;
+    if (f.corner_search) {
+      const CornerSearch& c = *f.corner_search;
+      nlohmann::ordered_json search;
+      search["tried"] = c.tried;
+      search["changed"] = c.changed;
+      search["natural"] = {{"min", c.natural_worst}, {"mean", c.natural_mean}};
+      search["chosen"] = {{"min", c.chosen_worst}, {"mean", c.chosen_mean}};
+      face["corner_search"] = std::move(search);
+    }
     faces.push_back(std::move(face));
   }
   report["faces"] = std::move(faces);

@@ -158,4 +158,49 @@ std::vector<std::vector<int>> corner_choices(const FaceBoundary& b, int face,
   return choices;
 }
 
+std::vector<std::vector<int>> searched_corner_choices(const FaceBoundary& b,
+                                                      const std::vector<std::vector<int>>& tried) {
+  constexpr double kCandidateTurn = 5.0 * M_PI / 180.0;
+  const int edges = static_cast<int>(b.edge_start.size());
+  if (edges <= 1) return {};
+  std::vector<Candidate> candidates;
+  for (int k = 0; k < edges; ++k) {
+    if (b.turn[k] >= kCandidateTurn) candidates.push_back({b.edge_start[k], b.turn[k]});
+  }
+  std::vector<int> taken;
+  for (const Candidate& c : candidates) taken.push_back(c.position);
+  for (const Candidate& c : rounded_corners(b, taken)) candidates.push_back(c);
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Candidate& x, const Candidate& y) { return x.turn > y.turn; });
+  if (candidates.size() > static_cast<std::size_t>(kSearchCandidates)) candidates.resize(kSearchCandidates);
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& x, const Candidate& y) { return x.position < y.position; });
+
+  struct Scored {
+    double score;
+    std::vector<int> corners;
+  };
+  std::vector<Scored> sets;
+  const int n = static_cast<int>(candidates.size());
+  // Every subset of 2 to 4 candidates, by bit mask (n <= 8: at most 154 sets).
+  for (unsigned mask = 1; mask < (1u << n); ++mask) {
+    const int count = __builtin_popcount(mask);
+    if (count < 2 || count > 4) continue;
+    const double target_turn = 2 * M_PI / count;  // a regular polygon's turn at each corner
+    Scored s{0, {}};
+    for (int i = 0; i < n; ++i) {
+      if (!(mask & (1u << i))) continue;
+      s.corners.push_back(candidates[i].position);
+      s.score += std::abs(candidates[i].turn - target_turn);
+    }
+    if (std::find(tried.begin(), tried.end(), s.corners) != tried.end()) continue;
+    sets.push_back(std::move(s));
+  }
+  std::stable_sort(sets.begin(), sets.end(), [](const Scored& x, const Scored& y) { return x.score < y.score; });
+  if (sets.size() > static_cast<std::size_t>(kMaxSearchedSets)) sets.resize(kMaxSearchedSets);
+  std::vector<std::vector<int>> choices;
+  for (Scored& s : sets) choices.push_back(std::move(s.corners));
+  return choices;
+}
+
 }  // namespace tquad

@@ -28,4 +28,15 @@ std::vector<int> choose_face_corners(const FaceBoundary& boundary, int face,
 std::vector<std::vector<int>> corner_choices(const FaceBoundary& boundary, int face,
                                              const std::vector<int>& requested);
 
+// More corner sets for --corners best (the paper's Figures 9 and 10: a region meshed
+// with 3 or 2 curves can beat its natural 4): sets of 2, 3 and 4 of the face's corner
+// candidates (its vertices turning at least 5 degrees and its fillets' middles, the
+// kSearchCandidates sharpest), those in `tried` left out, the kMaxSearchedSets whose
+// corners turn closest to what their count asks (90 degrees for 4, 120 for 3, 180 for
+// 2) first. Empty for a one-edge loop (a disk has its O-grid).
+constexpr int kSearchCandidates = 8;
+constexpr int kMaxSearchedSets = 24;
+std::vector<std::vector<int>> searched_corner_choices(const FaceBoundary& boundary,
+                                                      const std::vector<std::vector<int>>& tried);
+
 }  // namespace tquad

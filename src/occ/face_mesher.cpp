@@ -221,6 +221,20 @@ bool better_face_mesh(const FaceMeshResult& a, const FaceMeshResult& b) {
   return a.worst_corner > b.worst_corner;
 }
 
+double mean_scaled_jacobian(const FaceMeshResult& m) {
+  if (m.scaled_jacobian.empty()) return 0.0;
+  double sum = 0;
+  for (double v : m.scaled_jacobian) sum += v;
+  return sum / static_cast<double>(m.scaled_jacobian.size());
+}
+
+bool better_worst_then_mean(const FaceMeshResult& a, const FaceMeshResult& b) {
+  if (a.inverted != b.inverted || a.collapsed != b.collapsed || std::abs(a.worst_corner - b.worst_corner) > 1e-9) {
+    return better_face_mesh(a, b);
+  }
+  return mean_scaled_jacobian(a) > mean_scaled_jacobian(b);
+}
+
 FaceMeshResult mesh_face(const ShapeIndex& index, int face_index, const FaceBoundary& boundary,
                          const std::vector<int>& corners, const std::vector<Vec3>& nodes,
                          const MeshOptions& options) {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/mesher.h"
+#include "core/shape_mesh.h"
 #include "occ/face_boundary.h"
 #include "occ/shape_index.h"
 
@@ -43,6 +44,7 @@ struct FaceMeshResult {
   double placement_seconds = 0;  // putting its interior nodes on the surface
   double meshing_seconds = 0;    // the face's routes before smoothing, every candidate
   double smoothing_seconds = 0;  // smoothing the chosen mesh on the surface
+  std::optional<CornerSearch> corner_search;  // set by --corners best
 };
 
 // Whether the surface's normal direction at a point is not to be trusted: S_u and
@@ -76,6 +78,13 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
 // Whether mesh a beats mesh b of the same face: fewer inverted quads, then fewer
 // collapsed ones (triangles in effect), then a better worst corner.
 bool better_face_mesh(const FaceMeshResult& a, const FaceMeshResult& b);
+
+// The mean of a face mesh's per-quad scaled Jacobian (0 for no quad).
+double mean_scaled_jacobian(const FaceMeshResult& m);
+
+// better_face_mesh, and at the same worst corner (within 1e-9) the higher mean: the
+// order --corners best keeps ("the best worst element, then the best mean").
+bool better_worst_then_mean(const FaceMeshResult& a, const FaceMeshResult& b);
 
 // Quads come counter-clockwise around the face's outer normal. Throws InputError with
 // the reason when neither route meshes the face; a mesh with inverted quads is

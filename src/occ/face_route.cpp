@@ -57,6 +57,9 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
   const bool pole = boundary.has_degenerate_edge || boundary.polar;
   if (boundary.inner_wires > 0 && pole) throw InputError(name + " has a hole and a pole; not supported yet");
   bool decompose = !pole;
+  const auto requested = options.corners.find(f);
+  const bool user_corners = requested != options.corners.end();
+  std::vector<std::vector<int>> natural_corners;
   auto keep = [&](FaceMeshResult&& r) {
     if (!best || better_face_mesh(r, *best)) best = std::move(r);
   };
@@ -68,10 +71,8 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
       note_refusal(e);
     }
   } else if (boundary.inner_wires == 0) {
-    const auto requested = options.corners.find(f);
-    const bool user_corners = requested != options.corners.end();
-    for (const std::vector<int>& corners :
-         corner_choices(boundary, f, user_corners ? requested->second : std::vector<int>{})) {
+    natural_corners = corner_choices(boundary, f, user_corners ? requested->second : std::vector<int>{});
+    for (const std::vector<int>& corners : natural_corners) {
       try {
         keep(mesh_face(index, f, boundary, corners, nodes, options.templates));
       } catch (const std::exception& e) {  // an internal failure of one route is noted; others follow
@@ -109,13 +110,46 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     if (refusal_internal) throw std::runtime_error(refusal);
     throw InputError(refusal);
   }
+  // --corners best: more corner sets compete with the routes above (the natural choice).
+  std::optional<FaceMeshResult> natural;
+  CornerSearch search;
+  bool replaced = false;
+  if (options.best_corners && boundary.inner_wires == 0 && !pole && !user_corners) {
+    natural = *best;
+    for (const std::vector<int>& corners : searched_corner_choices(boundary, natural_corners)) {
+      try {
+        FaceMeshResult candidate = mesh_face(index, f, boundary, corners, nodes, options.templates);
+        ++search.tried;
+        if (better_worst_then_mean(candidate, *best)) best = std::move(candidate), replaced = true;
+      } catch (const std::exception&) {  // a set the templates cannot mesh is one fewer candidate
+        ++search.tried;
+      }
+    }
+  }
   // Every candidate route counts, the rejected ones too.
   best->meshing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const bool seam = std::find(boundary.is_seam.begin(), boundary.is_seam.end(), 1) != boundary.is_seam.end();
   if (options.smooth) {
-    const bool seam = std::find(boundary.is_seam.begin(), boundary.is_seam.end(), 1) != boundary.is_seam.end();
     const auto smoothing = std::chrono::steady_clock::now();
     smooth_face_mesh(index.face(f), seam, nodes, *best);
     best->smoothing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - smoothing).count();
+  }
+  if (natural && !replaced) natural = *best;  // the natural choice stayed (smoothed now)
+  if (natural) {
+    // The search compared meshes before smoothing; smoothed, the natural choice may
+    // still be the better one, and then it stays: never worse than without the search.
+    if (options.smooth && replaced) smooth_face_mesh(index.face(f), seam, nodes, *natural);
+    search.natural_worst = natural->worst_corner;
+    search.natural_mean = mean_scaled_jacobian(*natural);
+    search.changed = better_worst_then_mean(*best, *natural);
+    if (!search.changed) {
+      natural->meshing_seconds = best->meshing_seconds;
+      natural->smoothing_seconds = best->smoothing_seconds;
+      best = std::move(natural);
+    }
+    search.chosen_worst = best->worst_corner;
+    search.chosen_mean = mean_scaled_jacobian(*best);
+    best->corner_search = search;
   }
   if (best->inverted > 0 && !options.allow_inverted) {
     char worst[32];

@@ -56,6 +56,9 @@ struct ShapeMeshOptions {
   std::map<int, std::string> damaged_faces;
   // Smooth each face's mesh on its surface (surface_smoothing.h).
   bool smooth = true;
+  // Search more corner sets per face without holes (face_corners.h,
+  // searched_corner_choices) and keep the best worst, then mean, scaled Jacobian.
+  bool best_corners = false;
   // Worker threads for the faces; <= 0: all cores.
   int threads = 0;
   // Mesh the other faces when one is refused (and list it); otherwise refuse all.

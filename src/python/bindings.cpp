@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/corner_search.h"
 #include "core/input_error.h"
 #include "core/mesher.h"
 #include "core/mesh_validation.h"
@@ -76,6 +77,17 @@ py::dict mesh_dict(const ShapeMesh& mesh, const QualitySummary& quality) {
     d["template_tree"] = f.template_tree;
     d["first_quad"] = f.first_quad;
     d["quad_count"] = f.quad_count;
+    if (f.corner_search) {
+      const CornerSearch& c = *f.corner_search;
+      py::dict search;
+      search["tried"] = c.tried;
+      search["changed"] = c.changed;
+      search["natural_min"] = c.natural_worst;
+      search["natural_mean"] = c.natural_mean;
+      search["chosen_min"] = c.chosen_worst;
+      search["chosen_mean"] = c.chosen_mean;
+      d["corner_search"] = search;
+    }
     faces.append(d);
   }
   for (const RefusedFace& f : mesh.refused_faces) {
@@ -105,7 +117,7 @@ MeshOptions template_options(int t4_ratio, int t5_cut_edges, long long max_quads
 
 py::dict mesh_boundary_binding(const py::array_t<double, py::array::c_style | py::array::forcecast>& points,
                                const std::vector<int>& corners, int t4_ratio, int t5_cut_edges,
-                               long long max_quads, bool smooth) {
+                               long long max_quads, bool smooth, bool best_corners) {
   if (points.ndim() != 2 || (points.shape(1) != 2 && points.shape(1) != 3)) {
     throw InputError("points must be an N x 3 (or N x 2) array of coordinates");
   }
@@ -119,14 +131,25 @@ py::dict mesh_boundary_binding(const py::array_t<double, py::array::c_style | py
   QualitySummary quality;
   {
     py::gil_scoped_release release;
-    QuadMesh mesh = mesh_boundary(loop, template_options(t4_ratio, t5_cut_edges, max_quads));
+    Vec3 normal;
+    const bool planar = planar_normal(loop.points, normal);
+    const std::optional<Vec3> plane = planar ? std::optional<Vec3>(normal) : std::nullopt;
+    const MeshOptions options = template_options(t4_ratio, t5_cut_edges, max_quads);
+    QuadMesh mesh;
+    std::optional<CornerSearch> search;
+    if (best_corners) {
+      CornerSearchResult found = mesh_boundary_best_corners(loop, options, plane, smooth);
+      mesh = std::move(found.mesh);
+      search = found.search;
+    } else {
+      mesh = mesh_boundary(loop, options);
+    }
     // The CLI's final check, the same for every front end.
     const std::string problem = check_disk_mesh(mesh, static_cast<int>(loop.points.size()));
     if (!problem.empty()) throw std::logic_error("the mesh is invalid: " + problem);
-    Vec3 normal;
-    const bool planar = planar_normal(loop.points, normal);
-    if (smooth) smooth_planar_region(mesh, static_cast<int>(loop.points.size()), planar ? std::optional<Vec3>(normal) : std::nullopt);
+    if (smooth && !best_corners) smooth_planar_region(mesh, static_cast<int>(loop.points.size()), plane);
     shape = single_face_mesh(std::move(mesh));
+    shape.faces[0].corner_search = search;
     quality = measure_mesh_quality(shape, planar ? std::optional<Vec3>(normal) : std::nullopt);
   }
   py::dict out = mesh_dict(shape, quality);
@@ -141,9 +164,10 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
                             const std::map<int, std::vector<int>>& corners, bool keep_going,
                             bool allow_inverted, int threads, int t4_ratio, int t5_cut_edges,
                             long long max_quads, bool smooth, const py::object& progress,
-                            double read_timeout) {
+                            double read_timeout, bool best_corners) {
   ShapeMeshOptions options;
   options.smooth = smooth;
+  options.best_corners = best_corners;
   // The Python progress callable runs with the GIL, one call at a time; returning
   // True, or raising, cancels. Its exception is re-raised once meshing has stopped.
   std::atomic<bool> cancel{false};
@@ -232,9 +256,10 @@ PYBIND11_MODULE(_core, m) {
   // Cancelled from the progress callback: nothing is returned.
   py::register_exception<tquad::MeshCancelled>(m, "Cancelled", PyExc_RuntimeError);
   m.def("mesh_boundary", &tquad::mesh_boundary_binding, py::arg("points"), py::arg("corners"),
-        py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("smooth"));
+        py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("smooth"),
+        py::arg("best_corners"));
   m.def("mesh_shape", &tquad::mesh_shape_binding, py::arg("brep_text_or_path"), py::arg("size"),
         py::arg("faces"), py::arg("corners"), py::arg("keep_going"), py::arg("allow_inverted"),
         py::arg("threads"), py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("smooth"),
-        py::arg("progress"), py::arg("read_timeout"));
+        py::arg("progress"), py::arg("read_timeout"), py::arg("best_corners"));
 }

@@ -360,6 +360,29 @@ TEST_F(ShapeCli, MeshioReadsTheInp) {
 
 // ---- --faces -----------------------------------------------------------------------
 
+TEST_F(ShapeCli, BestCornersSearchEveryFaceWithoutHolesAndAreNeverWorse) {
+  // filleted_bracket.brep: faces without holes get a corner_search record, their
+  // chosen worst at least the natural one; face 0's own corners are an instruction.
+  const std::string shape = shape_file("filleted_bracket.brep");
+  const RunResult natural = run_tquad({"mesh", shape, "-o", path("n.vtu"), "--report", "json"});
+  const RunResult best = run_tquad({"mesh", shape, "-o", path("b.vtu"), "--report", "json", "--corners", "best"});
+  ASSERT_EQ(natural.exit_status, 0) << natural.err;
+  ASSERT_EQ(best.exit_status, 0) << best.err;
+  const json a = json::parse(natural.out), b = json::parse(best.out);
+  int searched = 0;
+  for (const json& face : b["faces"]) {
+    if (!face.contains("corner_search")) continue;
+    ++searched;
+    const json& s = face["corner_search"];
+    EXPECT_GE(s["chosen"]["min"].get<double>(), s["natural"]["min"].get<double>() - 1e-12) << face["face"];
+  }
+  EXPECT_GT(searched, 0);
+  for (const json& face : a["faces"]) EXPECT_FALSE(face.contains("corner_search"));
+  EXPECT_GE(b["quality"]["scaled_jacobian"]["min"].get<double>(),
+            a["quality"]["scaled_jacobian"]["min"].get<double>() - 1e-12);
+  EXPECT_EQ(b["quality"]["inverted"], 0);
+}
+
 TEST_F(ShapeCli, FacesMeshesOnlyThoseFaces) {
   const json report = report_of(shape_file("plate_with_hole.brep"), "plate.json", {"--faces", "0,2"});
   ASSERT_FALSE(HasFailure());

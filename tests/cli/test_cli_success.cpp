@@ -262,6 +262,41 @@ TEST_F(Success, ShippedExampleBoundariesMesh) {
   EXPECT_GE(examples, 4);
 }
 
+TEST_F(Success, BestCornersOnTheShippedBoundariesAreNeverWorse) {
+  // --corners best on each example (the paper's examples 3 and 4 among them): the
+  // report gives the given corners' figures and the chosen ones, the chosen worst at
+  // least the given one, and the mesh's quality is the chosen one.
+  int changed = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(TQUAD_EXAMPLES_DIR)) {
+    if (entry.path().extension() != ".json") continue;
+    const std::string stem = entry.path().stem().string();
+    const RunResult r = run_tquad({"mesh", entry.path().string(), "-o", path(stem + ".vtu"), "--report", "json",
+                                   "--corners", "best"});
+    ASSERT_EQ(r.exit_status, 0) << stem << ": " << r.err;
+    const json report = json::parse(r.out);
+    const json& search = report["faces"][0]["corner_search"];
+    ASSERT_TRUE(search.is_object()) << stem;
+    EXPECT_GT(search["tried"].get<int>(), 0) << stem;
+    const double natural = search["natural"]["min"].get<double>(), chosen = search["chosen"]["min"].get<double>();
+    EXPECT_GE(chosen, natural - 1e-12) << stem;
+    EXPECT_NEAR(report["quality"]["scaled_jacobian"]["min"].get<double>(), chosen, 1e-9) << stem;
+    EXPECT_EQ(report["quality"]["inverted"], 0) << stem;
+    changed += search["changed"].get<bool>() ? 1 : 0;
+    std::printf("[ corners  ] %-22s worst %.3f -> %.3f, mean %.3f -> %.3f (%s)\n", stem.c_str(), natural, chosen,
+                search["natural"]["mean"].get<double>(), search["chosen"]["mean"].get<double>(),
+                search["changed"].get<bool>() ? "other corners" : "given corners");
+  }
+  EXPECT_GT(changed, 0) << "no example found better corners";
+}
+
+TEST_F(Success, ABoundaryFileTakesOnlyCornersBest) {
+  const RunResult r = run_tquad({"mesh", std::string(TQUAD_EXAMPLES_DIR) + "/plate_t2.json", "-o", path("p.vtu"),
+                                 "--corners", "0:1,2"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_NE(r.err.find("only --corners best"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(path("p.vtu")));
+}
+
 TEST(CommandLineHelp, DocumentsEveryOption) {
   const RunResult top = run_tquad({"--help"});
   EXPECT_EQ(top.exit_status, 0) << top.err;

@@ -225,5 +225,24 @@ class BoundarySmoothingTest(unittest.TestCase):
                                delta=2e-3)
 
 
+class BestCornersTest(unittest.TestCase):
+    def test_boundary_and_shape_searches_report_the_natural_choice_beside_the_chosen(self):
+        points = np.array([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [3.0, 0.0], [3.0, 1.0], [3.0, 2.0],
+                           [2.0, 2.0], [1.0, 2.0], [0.0, 2.0], [0.0, 1.0]])
+        plain = tquad.mesh_boundary(points, [0, 3, 5, 8])
+        self.assertNotIn("corner_search", plain.faces[0])
+        best = tquad.mesh_boundary(points, [0, 3, 5, 8], best_corners=True)
+        search = best.faces[0]["corner_search"]
+        self.assertGreater(search["tried"], 0)
+        self.assertGreaterEqual(search["chosen_min"], search["natural_min"] - 1e-12)
+        self.assertAlmostEqual(best.quality["scaled_jacobian"]["min"], search["chosen_min"], places=9)
+        np.testing.assert_array_equal(best.nodes[:len(points), :2], points)
+        shape = tquad.mesh_shape(os.path.join(SHAPES, "filleted_bracket.brep"), best_corners=True)
+        searched = [f["corner_search"] for f in shape.faces if "corner_search" in f]
+        self.assertTrue(searched)
+        for s in searched:
+            self.assertGreaterEqual(s["chosen_min"], s["natural_min"] - 1e-12)
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -86,7 +86,8 @@ class Mesh:
 
 
 def mesh_boundary(points, corners: Sequence[int], *, t4_ratio: int = 2,
-                  t5_cut_edges: int = 0, max_quads: int = _MAX_QUADS, smooth: bool = True) -> Mesh:
+                  t5_cut_edges: int = 0, max_quads: int = _MAX_QUADS, smooth: bool = True,
+                  best_corners: bool = False) -> Mesh:
     """Mesh the region inside a closed boundary loop.
 
     Args:
@@ -100,13 +101,17 @@ def mesh_boundary(points, corners: Sequence[int], *, t4_ratio: int = 2,
         smooth: smooth a planar region's interior nodes in its plane (doublets
             merged, no node's worst corner lowered); a curved 3D loop is left as
             meshed. The boundary points are kept bit for bit either way.
+        best_corners: also try other corner sets (2, 3 or 4 curves, from the given
+            corners and the points where the loop turns) and keep the best worst,
+            then mean, scaled Jacobian; ``faces[0]["corner_search"]`` gives the
+            given corners' figures beside the chosen ones (the CLI's --corners best).
 
     Raises:
         ValueError: the boundary cannot be meshed (the message says why and where).
     """
     array = np.asarray(points, dtype=np.float64)
     return Mesh(_core.mesh_boundary(array, [int(c) for c in corners], int(t4_ratio),
-                                    int(t5_cut_edges), int(max_quads), bool(smooth)))
+                                    int(t5_cut_edges), int(max_quads), bool(smooth), bool(best_corners)))
 
 
 def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
@@ -116,7 +121,7 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
                t4_ratio: int = 2, t5_cut_edges: int = 0,
                max_quads: int = _MAX_QUADS, smooth: bool = True,
                progress: Optional[Callable[[str, int, int], Optional[bool]]] = None,
-               read_timeout: float = 300.0) -> Mesh:
+               read_timeout: float = 300.0, best_corners: bool = False) -> Mesh:
     """Mesh the faces of a CAD shape, conforming across shared edges.
 
     Args:
@@ -139,6 +144,10 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
         read_timeout: seconds the reader (a child process, so that a damaged file
             cannot take the interpreter down) may take before the input is refused
             as damaged.
+        best_corners: on each face without holes and without ``corners``, also try
+            other corner sets and keep the best worst, then mean, scaled Jacobian;
+            each such face's ``corner_search`` gives the natural choice's figures
+            beside the chosen ones (the CLI's --corners best).
 
     Raises:
         Cancelled: the progress callback asked to stop (nothing is returned).
@@ -150,4 +159,4 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
     return Mesh(_core.mesh_shape(str(brep_text_or_path), float(size), face_list, corner_map,
                                  bool(keep_going), bool(allow_inverted), int(threads),
                                  int(t4_ratio), int(t5_cut_edges), int(max_quads), bool(smooth),
-                                 progress, float(read_timeout)))
+                                 progress, float(read_timeout), bool(best_corners)))

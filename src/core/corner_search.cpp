@@ -1,0 +1,132 @@
+#include "core/corner_search.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/input_error.h"
+#include "core/quality.h"
+#include "core/smoothing.h"
+
+namespace tquad {
+
+namespace {
+
+constexpr double kCandidateTurn = 5.0 * M_PI / 180.0;
+
+// Turn of the loop at point i (radians, >= 0): the angle between the incoming and the
+// outgoing segment.
+double turn_at(const std::vector<Vec3>& p, int i) {
+  const int n = static_cast<int>(p.size());
+  const Vec3 a = p[i] - p[(i + n - 1) % n], b = p[(i + 1) % n] - p[i];
+  const double la = norm(a), lb = norm(b);
+  if (!(la > 0) || !(lb > 0)) return 0;
+  return std::acos(std::clamp(dot(a, b) / (la * lb), -1.0, 1.0));
+}
+
+struct Scored {
+  double score;
+  std::vector<int> corners;
+};
+
+std::vector<std::vector<int>> candidate_sets(const BoundaryLoop& loop, const std::vector<int>& given) {
+  const int n = static_cast<int>(loop.points.size());
+  std::vector<std::pair<double, int>> candidates;  // (turn, point)
+  for (int i = 0; i < n; ++i) {
+    const double turn = turn_at(loop.points, i);
+    const bool is_given = std::find(given.begin(), given.end(), i) != given.end();
+    // The given corners always stay candidates (ahead of all others).
+    if (is_given || turn >= kCandidateTurn) candidates.push_back({is_given ? 10.0 + turn : turn, i});
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const auto& x, const auto& y) { return x.first > y.first; });
+  if (candidates.size() > static_cast<std::size_t>(kBoundarySearchCandidates)) {
+    candidates.resize(kBoundarySearchCandidates);
+  }
+  std::sort(candidates.begin(), candidates.end(), [](const auto& x, const auto& y) { return x.second < y.second; });
+  const int m = static_cast<int>(candidates.size());
+  std::vector<Scored> sets;
+  for (unsigned mask = 1; mask < (1u << m); ++mask) {
+    const int count = __builtin_popcount(mask);
+    if (count < 2 || count > 4) continue;
+    const double target_turn = 2 * M_PI / count;  // a regular polygon's turn at each corner
+    Scored s{0, {}};
+    for (int k = 0; k < m; ++k) {
+      if (!(mask & (1u << k))) continue;
+      s.corners.push_back(candidates[k].second);
+      s.score += std::abs(turn_at(loop.points, candidates[k].second) - target_turn);
+    }
+    if (s.corners == given) continue;
+    sets.push_back(std::move(s));
+  }
+  std::stable_sort(sets.begin(), sets.end(), [](const Scored& x, const Scored& y) { return x.score < y.score; });
+  if (sets.size() > static_cast<std::size_t>(kBoundarySearchSets)) sets.resize(kBoundarySearchSets);
+  std::vector<std::vector<int>> out;
+  for (Scored& s : sets) out.push_back(std::move(s.corners));
+  return out;
+}
+
+// Inverted quads, then the worst and mean scaled Jacobian: the order of the search.
+struct Score {
+  long long inverted = 0;
+  double worst = -2, mean = -2;
+  bool better_than(const Score& o) const {
+    if (inverted != o.inverted) return inverted < o.inverted;
+    if (std::abs(worst - o.worst) > 1e-9) return worst > o.worst;
+    return mean > o.mean;
+  }
+};
+
+Score score_of(const QuadMesh& mesh, const std::optional<Vec3>& plane_normal) {
+  const QualitySummary q = summarize_quality(mesh, plane_normal);
+  return {q.inverted, q.scaled_jacobian.min, q.scaled_jacobian.avg};
+}
+
+}  // namespace
+
+CornerSearchResult mesh_boundary_best_corners(const BoundaryLoop& loop, const MeshOptions& options,
+                                              const std::optional<Vec3>& plane_normal, bool smooth) {
+  const std::vector<int> given = validate_boundary(loop);
+  const int n = static_cast<int>(loop.points.size());
+  CornerSearchResult natural{mesh_boundary(loop, options), given, {}};
+  Score natural_score = score_of(natural.mesh, plane_normal);
+  CornerSearchResult best = natural;
+  Score best_score = natural_score;
+  int tried = 0;
+  for (const std::vector<int>& corners : candidate_sets(loop, given)) {
+    ++tried;
+    BoundaryLoop other{loop.points, corners};
+    try {
+      QuadMesh mesh = mesh_boundary(other, options);
+      const Score s = score_of(mesh, plane_normal);
+      if (s.better_than(best_score)) best = {std::move(mesh), corners, {}}, best_score = s;
+    } catch (const InputError&) {
+      // counts the templates cannot mesh with these curves: one candidate fewer
+    }
+  }
+  const bool replaced = best.corners != given;
+  if (smooth && plane_normal) {
+    smooth_planar_region(best.mesh, n, plane_normal);
+    best_score = score_of(best.mesh, plane_normal);
+    if (replaced) {
+      smooth_planar_region(natural.mesh, n, plane_normal);
+      natural_score = score_of(natural.mesh, plane_normal);
+    } else {
+      natural_score = best_score;
+    }
+  }
+  CornerSearch search;
+  search.tried = tried;
+  search.natural_worst = natural_score.worst;
+  search.natural_mean = natural_score.mean;
+  search.changed = replaced && best_score.better_than(natural_score);
+  // Without a replacement `best` is the given corners' mesh, the one smoothed.
+  const bool keep_best = search.changed || !replaced;
+  CornerSearchResult& kept = keep_best ? best : natural;
+  const Score& kept_score = keep_best ? best_score : natural_score;
+  search.chosen_worst = kept_score.worst;
+  search.chosen_mean = kept_score.mean;
+  kept.search = search;
+  return std::move(kept);
+}
+
+}  // namespace tquad

@@ -1,0 +1,40 @@
+// mesh_boundary_best_corners: a boundary region meshed with the corner set, among its
+// given corners and other sharp points, that gives the best worst (then mean) scaled
+// Jacobian. The paper shows (Figures 9 and 10, Table 3) that a region meshed with 3 or
+// 2 curves can beat its natural 4, and leaves the choice to its user.
+//
+// Candidates: the given corners and the points where the loop turns at least 5
+// degrees, the kBoundarySearchCandidates sharpest; every set of 2, 3 or 4 of them,
+// the kBoundarySearchSets whose corners turn closest to what their count asks (90
+// degrees for 4, 120 for 3, 180 for 2) first. Sets are compared before smoothing; the
+// best and the given set are then both smoothed (a planar loop) and the better kept,
+// so the result is never worse than the given corners'. Deterministic.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "core/boundary_loop.h"
+#include "core/mesher.h"
+#include "core/shape_mesh.h"
+#include "core/vec3.h"
+
+namespace tquad {
+
+constexpr int kBoundarySearchCandidates = 8;
+constexpr int kBoundarySearchSets = 40;
+
+struct CornerSearchResult {
+  QuadMesh mesh;
+  std::vector<int> corners;  // the corners used, sorted
+  CornerSearch search;
+};
+
+// `plane_normal`: the loop's plane when planar (quality signed by it, the meshes
+// smoothed in it when `smooth`), else std::nullopt (each quad's own normal, no
+// smoothing). Throws InputError as mesh_boundary does when the given corners cannot
+// be meshed.
+CornerSearchResult mesh_boundary_best_corners(const BoundaryLoop& loop, const MeshOptions& options,
+                                              const std::optional<Vec3>& plane_normal, bool smooth);
+
+}  // namespace tquad
