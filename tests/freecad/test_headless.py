@@ -84,9 +84,9 @@ class MeshObjectTest(unittest.TestCase):
                     if abs(e.Vertexes[0].Point.z - e.Vertexes[1].Point.z) > 1e-9]
         return box.makeFillet(5, vertical[:2])
 
-    def _assert_same_as_tquad(self, mesh_obj, shape, size):
+    def _assert_same_as_tquad(self, mesh_obj, shape, size, **options):
         femmesh = mesh_obj.FemMesh
-        reference = _tquad().mesh_shape(shape.exportBrepToString(), size=size)
+        reference = _tquad().mesh_shape(shape.exportBrepToString(), size=size, **options)
         self.assertFalse(reference.refused_faces, "tquad refused a face of the test shape")
         self.assertEqual(femmesh.NodeCount, len(reference.nodes), "node count vs tquad")
         self.assertEqual(femmesh.FaceCount, len(reference.quads), "element count vs tquad")
@@ -153,6 +153,23 @@ class MeshObjectTest(unittest.TestCase):
             normal = (c - a).cross(d - b)
             outward = (a + b + c + d) * 0.25 - centre
             self.assertGreater(normal.dot(outward), 0, f"element {element} faces inwards")
+
+    def test_smooth_and_best_corners_reach_tquad(self):
+        from freecad.templatequad import make_mesh
+        part = self._part(self._filleted_box(), "FilletedBoxOptions")
+        mesh = make_mesh(self.doc, part, size=3.0)
+        self.assertTrue(mesh.Smooth, "smoothing is on by default")
+        self.assertFalse(mesh.BestCorners, "the corner search is off by default")
+        smoothed = [tuple(mesh.FemMesh.getNodeById(i)) for i in range(1, mesh.FemMesh.NodeCount + 1)]
+        mesh.Smooth = False
+        self.doc.recompute()
+        self._assert_same_as_tquad(mesh, part.Shape, 3.0, smooth=False)
+        raw = [tuple(mesh.FemMesh.getNodeById(i)) for i in range(1, mesh.FemMesh.NodeCount + 1)]
+        self.assertNotEqual(raw, smoothed, "Smooth off left the nodes where smoothing put them")
+        mesh.Smooth = True
+        mesh.BestCorners = True
+        self.doc.recompute()
+        self._assert_same_as_tquad(mesh, part.Shape, 3.0, best_corners=True)
 
     def test_changing_size_remeshes_on_recompute(self):
         from freecad.templatequad import make_mesh

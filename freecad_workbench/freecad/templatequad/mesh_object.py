@@ -44,7 +44,16 @@ _INPUTS = (
      "The k of the T4 template test k*C <= A and k*C <= B (at least 2)"),
     ("App::PropertyBool", "KeepGoing",
      "Mesh the other faces when one is refused (refused faces are listed in RefusedFaces)"),
+    ("App::PropertyBool", "Smooth",
+     "Move interior nodes on each face's surface to better-shaped quads (never lowering "
+     "the worst corner around a node)"),
+    ("App::PropertyBool", "BestCorners",
+     "Try more corner sets (2, 3 or 4 curves) on every face without holes and without a "
+     "Corners override, and keep the best worst, then mean, element quality (slower)"),
 )
+# Values of new properties, for new objects and for files saved before they existed
+# (so those files mesh as they did).
+_DEFAULTS = {"T4Ratio": 2, "Smooth": True, "BestCorners": False}
 _OUTPUTS = (
     ("App::PropertyStringList", "TemplateTrees", "Template tree of each meshed face"),
     ("App::PropertyStringList", "RefusedFaces", "Faces not meshed, with the reason"),
@@ -57,8 +66,8 @@ def add_properties(obj) -> None:
     for prop_type, name, doc in _INPUTS:
         if not hasattr(obj, name):
             obj.addProperty(prop_type, name, GROUP, doc)
-            if name == "T4Ratio":
-                obj.T4Ratio = 2
+            if name in _DEFAULTS:
+                setattr(obj, name, _DEFAULTS[name])
     for prop_type, name, doc in _OUTPUTS:
         if not hasattr(obj, name):
             obj.addProperty(prop_type, name, RESULT_GROUP, doc, _OUTPUT)
@@ -91,7 +100,8 @@ class TemplateQuadMesh(StatelessProxy):
             mesh = meshing.mesh_shape(shape, size=obj.Size.Value,
                                       faces=meshing.parse_faces(obj.Faces),
                                       corners=meshing.parse_corners(obj.Corners),
-                                      t4_ratio=obj.T4Ratio, keep_going=obj.KeepGoing)
+                                      t4_ratio=obj.T4Ratio, keep_going=obj.KeepGoing,
+                                      smooth=obj.Smooth, best_corners=obj.BestCorners)
         except meshing.TquadMissing as error:
             self.last_error = str(error).strip()
             self._clear(obj)

@@ -109,7 +109,7 @@ def parse_faces(names: Iterable[str]) -> Optional[List[int]]:
 
 def mesh_shape(shape, size: float = 0.0, faces: Optional[Sequence[int]] = None,
                corners: Optional[Dict[int, List[int]]] = None, t4_ratio: int = 2,
-               keep_going: bool = False):
+               keep_going: bool = False, smooth: bool = True, best_corners: bool = False):
     """mesh_shape(): mesh a Part.Shape with tquad; returns the tquad.Mesh.
 
     The shape goes over as BREP text (``exportBrepToString``), which keeps its
@@ -122,7 +122,8 @@ def mesh_shape(shape, size: float = 0.0, faces: Optional[Sequence[int]] = None,
     tquad = load_tquad()
     return tquad.mesh_shape(shape.exportBrepToString(), size=float(size), faces=faces,
                             corners=corners or None, keep_going=bool(keep_going),
-                            t4_ratio=int(t4_ratio))
+                            t4_ratio=int(t4_ratio), smooth=bool(smooth),
+                            best_corners=bool(best_corners))
 
 
 def to_femmesh(mesh):
