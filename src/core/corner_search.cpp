@@ -23,46 +23,25 @@ double turn_at(const std::vector<Vec3>& p, int i) {
   return std::acos(std::clamp(dot(a, b) / (la * lb), -1.0, 1.0));
 }
 
-struct Scored {
-  double score;
-  std::vector<int> corners;
-};
-
 std::vector<std::vector<int>> candidate_sets(const BoundaryLoop& loop, const std::vector<int>& given) {
   const int n = static_cast<int>(loop.points.size());
-  std::vector<std::pair<double, int>> candidates;  // (turn, point)
+  std::vector<CornerCandidate> candidates;
   for (int i = 0; i < n; ++i) {
     const double turn = turn_at(loop.points, i);
-    const bool is_given = std::find(given.begin(), given.end(), i) != given.end();
-    // The given corners always stay candidates (ahead of all others).
-    if (is_given || turn >= kCandidateTurn) candidates.push_back({is_given ? 10.0 + turn : turn, i});
+    if (turn >= kCandidateTurn || std::find(given.begin(), given.end(), i) != given.end()) {
+      candidates.push_back({i, turn});
+    }
   }
-  std::stable_sort(candidates.begin(), candidates.end(),
-                   [](const auto& x, const auto& y) { return x.first > y.first; });
+  // The given corners always stay candidates, then the sharpest points.
+  std::stable_sort(candidates.begin(), candidates.end(), [&](const CornerCandidate& x, const CornerCandidate& y) {
+    const bool gx = std::find(given.begin(), given.end(), x.position) != given.end();
+    const bool gy = std::find(given.begin(), given.end(), y.position) != given.end();
+    return gx != gy ? gx : x.turn > y.turn;
+  });
   if (candidates.size() > static_cast<std::size_t>(kBoundarySearchCandidates)) {
     candidates.resize(kBoundarySearchCandidates);
   }
-  std::sort(candidates.begin(), candidates.end(), [](const auto& x, const auto& y) { return x.second < y.second; });
-  const int m = static_cast<int>(candidates.size());
-  std::vector<Scored> sets;
-  for (unsigned mask = 1; mask < (1u << m); ++mask) {
-    const int count = __builtin_popcount(mask);
-    if (count < 2 || count > 4) continue;
-    const double target_turn = 2 * M_PI / count;  // a regular polygon's turn at each corner
-    Scored s{0, {}};
-    for (int k = 0; k < m; ++k) {
-      if (!(mask & (1u << k))) continue;
-      s.corners.push_back(candidates[k].second);
-      s.score += std::abs(turn_at(loop.points, candidates[k].second) - target_turn);
-    }
-    if (s.corners == given) continue;
-    sets.push_back(std::move(s));
-  }
-  std::stable_sort(sets.begin(), sets.end(), [](const Scored& x, const Scored& y) { return x.score < y.score; });
-  if (sets.size() > static_cast<std::size_t>(kBoundarySearchSets)) sets.resize(kBoundarySearchSets);
-  std::vector<std::vector<int>> out;
-  for (Scored& s : sets) out.push_back(std::move(s.corners));
-  return out;
+  return ranked_corner_sets(std::move(candidates), {given}, kBoundarySearchSets);
 }
 
 // Inverted quads, then the worst and mean scaled Jacobian: the order of the search.
@@ -82,6 +61,37 @@ Score score_of(const QuadMesh& mesh, const std::optional<Vec3>& plane_normal) {
 }
 
 }  // namespace
+
+std::vector<std::vector<int>> ranked_corner_sets(std::vector<CornerCandidate> candidates,
+                                                 const std::vector<std::vector<int>>& excluded, int limit) {
+  if (candidates.size() > 16) candidates.resize(16);
+  std::sort(candidates.begin(), candidates.end(),
+            [](const CornerCandidate& x, const CornerCandidate& y) { return x.position < y.position; });
+  struct Scored {
+    double score;
+    std::vector<int> corners;
+  };
+  std::vector<Scored> sets;
+  const int m = static_cast<int>(candidates.size());
+  for (unsigned mask = 1; mask < (1u << m); ++mask) {
+    const int count = __builtin_popcount(mask);
+    if (count < 2 || count > 4) continue;
+    const double target_turn = 2 * M_PI / count;  // a regular polygon's turn at each corner
+    Scored s{0, {}};
+    for (int k = 0; k < m; ++k) {
+      if (!(mask & (1u << k))) continue;
+      s.corners.push_back(candidates[k].position);
+      s.score += std::abs(candidates[k].turn - target_turn);
+    }
+    if (std::find(excluded.begin(), excluded.end(), s.corners) != excluded.end()) continue;
+    sets.push_back(std::move(s));
+  }
+  std::stable_sort(sets.begin(), sets.end(), [](const Scored& x, const Scored& y) { return x.score < y.score; });
+  if (sets.size() > static_cast<std::size_t>(std::max(limit, 0))) sets.resize(std::max(limit, 0));
+  std::vector<std::vector<int>> out;
+  for (Scored& s : sets) out.push_back(std::move(s.corners));
+  return out;
+}
 
 CornerSearchResult mesh_boundary_best_corners(const BoundaryLoop& loop, const MeshOptions& options,
                                               const std::optional<Vec3>& plane_normal, bool smooth) {

@@ -24,6 +24,19 @@ namespace tquad {
 constexpr int kBoundarySearchCandidates = 8;
 constexpr int kBoundarySearchSets = 40;
 
+// A point where curves may meet: its loop position and how much the loop turns there.
+struct CornerCandidate {
+  int position = 0;
+  double turn = 0;  // radians
+};
+
+// Every set of 2, 3 or 4 of the (at most 16) candidates, positions sorted, except the
+// sets in `excluded`; the `limit` whose corners turn closest to what their count asks
+// (2 pi / count: 90 degrees for 4, 120 for 3, 180 for 2, summed) first, ties in
+// enumeration order. The one ranking of corner sets, for boundary files and faces.
+std::vector<std::vector<int>> ranked_corner_sets(std::vector<CornerCandidate> candidates,
+                                                 const std::vector<std::vector<int>>& excluded, int limit);
+
 struct CornerSearchResult {
   QuadMesh mesh;
   std::vector<int> corners;  // the corners used, sorted

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/corner_search.h"
 #include "core/input_error.h"
 
 namespace tquad {
@@ -173,34 +174,9 @@ std::vector<std::vector<int>> searched_corner_choices(const FaceBoundary& b,
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Candidate& x, const Candidate& y) { return x.turn > y.turn; });
   if (candidates.size() > static_cast<std::size_t>(kSearchCandidates)) candidates.resize(kSearchCandidates);
-  std::sort(candidates.begin(), candidates.end(),
-            [](const Candidate& x, const Candidate& y) { return x.position < y.position; });
-
-  struct Scored {
-    double score;
-    std::vector<int> corners;
-  };
-  std::vector<Scored> sets;
-  const int n = static_cast<int>(candidates.size());
-  // Every subset of 2 to 4 candidates, by bit mask (n <= 8: at most 154 sets).
-  for (unsigned mask = 1; mask < (1u << n); ++mask) {
-    const int count = __builtin_popcount(mask);
-    if (count < 2 || count > 4) continue;
-    const double target_turn = 2 * M_PI / count;  // a regular polygon's turn at each corner
-    Scored s{0, {}};
-    for (int i = 0; i < n; ++i) {
-      if (!(mask & (1u << i))) continue;
-      s.corners.push_back(candidates[i].position);
-      s.score += std::abs(candidates[i].turn - target_turn);
-    }
-    if (std::find(tried.begin(), tried.end(), s.corners) != tried.end()) continue;
-    sets.push_back(std::move(s));
-  }
-  std::stable_sort(sets.begin(), sets.end(), [](const Scored& x, const Scored& y) { return x.score < y.score; });
-  if (sets.size() > static_cast<std::size_t>(kMaxSearchedSets)) sets.resize(kMaxSearchedSets);
-  std::vector<std::vector<int>> choices;
-  for (Scored& s : sets) choices.push_back(std::move(s.corners));
-  return choices;
+  std::vector<CornerCandidate> ranked;
+  for (const Candidate& c : candidates) ranked.push_back({c.position, c.turn});
+  return ranked_corner_sets(std::move(ranked), tried, kMaxSearchedSets);
 }
 
 }  // namespace tquad
