@@ -220,7 +220,7 @@ class BoundarySmoothingTest(unittest.TestCase):
         reference = tquad.mesh_boundary(flat, corners)
         self.assertEqual(len(mesh.quads), len(reference.quads))
         # Rounding in the rotated frame can take a move over or under the smoother's
-        # minimum gain (1e-4), so the two runs may part by a few of those gains.
+        # minimum gain, so the two runs may part by a few of those gains.
         self.assertAlmostEqual(mesh.quality["scaled_jacobian"]["min"], reference.quality["scaled_jacobian"]["min"],
                                delta=2e-3)
 
