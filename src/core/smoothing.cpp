@@ -41,7 +41,12 @@ struct LocalQuality {
   // Whether this (after a move) is better than `before`.
   bool improves_on(const LocalQuality& before) const {
     if (collapsed > before.collapsed) return false;
-    if (worst > before.worst + kWorstGain * std::max(std::abs(before.worst), kWorstGainFloor)) return true;
+    // Fewer collapsed quads is a gain of its own, if the worst corner holds.
+    if (collapsed < before.collapsed && worst >= before.worst) return true;
+    // Around a collapsed quad any gain counts: small steps are what opens it up.
+    const double needed =
+        before.collapsed > 0 ? 1e-12 : kWorstGain * std::max(std::abs(before.worst), kWorstGainFloor);
+    if (worst > before.worst + needed) return true;
     return worst >= before.worst && sum > before.sum + kSumGain;
   }
 };
