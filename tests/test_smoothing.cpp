@@ -14,6 +14,7 @@
 #include "core/hole_rings.h"
 #include "core/mesh_validation.h"
 #include "core/quality.h"
+#include "core/reflex_corners.h"
 #include "core/smoothing.h"
 #include "domain_generators.h"
 
@@ -147,6 +148,31 @@ TEST(AreaUntangling, RefusedPlacesAreNotTakenAndAFoldItCannotUndoIsLeftAsItWas) 
   if (r.inverted_after == r.inverted_before) {
     for (std::size_t n = 0; n < g.nodes.size(); ++n) EXPECT_TRUE(g.nodes[n] == folded[n]) << n;
   }
+}
+
+TEST(ReflexCorners, AQuadAloneAtAReflexPointIsSplitInFiveAndSmoothedValid) {
+  // An arrowhead of four boundary points, (1, 1) reflex, meshed as its own single
+  // quad: that quad is inverted at (1, 1) whatever moves. Split in five and smoothed,
+  // every quad is valid and the boundary is kept.
+  QuadMesh mesh;
+  mesh.nodes = {{0, 0, 0}, {3, 1, 0}, {0, 2, 0}, {1, 1, 0}};
+  mesh.quads = {{0, 1, 2, 3}};
+  EXPECT_EQ(summarize_quality(mesh, kUp).inverted, 1);
+  const std::vector<Vec3> boundary = mesh.nodes;
+  ASSERT_NO_THROW(smooth_planar_region(mesh, 4, kUp));
+  EXPECT_EQ(mesh.quads.size(), 5u);
+  EXPECT_EQ(mesh.nodes.size(), 1 + mesh.quads.size() + 4 / 2);
+  EXPECT_EQ(check_disk_mesh(mesh, 4), "");
+  for (int i = 0; i < 4; ++i) EXPECT_TRUE(mesh.nodes[i] == boundary[i]) << i;
+  const QualitySummary q = summarize_quality(mesh, kUp);
+  EXPECT_EQ(q.inverted, 0);
+  EXPECT_GT(q.scaled_jacobian.min, 0.0);
+  // A convex quad is left alone.
+  QuadMesh square;
+  square.nodes = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  square.quads = {{0, 1, 2, 3}};
+  EXPECT_EQ(split_reflex_corner_quads(square, 4, kUp), 0);
+  EXPECT_EQ(square.quads.size(), 1u);
 }
 
 TEST(HoleRings, AHoleGetsMappedRingsAndNoFanOnItsRim) {

@@ -9,6 +9,7 @@
 
 #include "core/area_untangling.h"
 #include "core/doublets.h"
+#include "core/reflex_corners.h"
 #include "core/node_adjacency.h"
 #include "core/quality.h"
 
@@ -313,6 +314,7 @@ SmoothingResult smooth_mesh_in_plane(QuadMesh& mesh, int fixed, const Vec3& norm
 
 void smooth_planar_region(QuadMesh& mesh, int boundary_points, const std::optional<Vec3>& plane_normal) {
   if (!plane_normal) return;
+  split_reflex_corner_quads(mesh, boundary_points, *plane_normal);
   int merged = 0;
   smooth_mesh_in_plane(mesh, boundary_points, *plane_normal, merged);
   const std::string problem = check_disk_mesh(mesh, boundary_points);

@@ -70,7 +70,8 @@ SmoothingResult smooth_mesh_in_plane(QuadMesh& mesh, int fixed, const Vec3& norm
                                      const SmoothingOptions& options = {});
 
 // A boundary region's mesh (boundary_points first) smoothed in its plane when the
-// loop is planar (plane_normal set), then checked again (check_disk_mesh; a failure
+// loop is planar (plane_normal set), a quad alone at a reflex boundary point first
+// split in five (reflex_corners.h), then checked again (check_disk_mesh; a failure
 // is std::logic_error, the mesher's fault). A curved 3D loop has no surface to keep
 // the nodes on: left as meshed. The CLI and the Python module both call this.
 void smooth_planar_region(QuadMesh& mesh, int boundary_points, const std::optional<Vec3>& plane_normal);
