@@ -1,17 +1,25 @@
-// libFuzzer target: the boundary JSON reader and the template mesher.
+// libFuzzer target: the boundary JSON reader and the template mesher, then what the
+// CLI and the Python module do next by default: a planar region smoothed in its plane
+// (reflex-point splits, untangling, smoothing), and for loops of at most 40 points
+// the --corners best search.
 //
 // Any input must end in a mesh that passes the final check (check_disk_mesh: all
 // quads, conforming, nodes = 1 + quads + boundary_edges / 2) or in an InputError.
 // Anything else, an exception of another kind, a crash, a hang or a sanitizer
-// report, is a bug. Meshes are capped at 200,000 quads to keep each run short.
+// report, is a bug. Meshes are capped at 200,000 quads, and smoothed only up to
+// 20,000, to keep each run short.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
+#include "core/corner_search.h"
 #include "core/input_error.h"
 #include "core/mesh_validation.h"
 #include "core/mesher.h"
+#include "core/planar_self_intersection.h"
+#include "core/smoothing.h"
 #include "io/boundary_json_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -30,6 +38,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const tquad::InputError&) {
     return 0;
   }
-  if (!tquad::check_disk_mesh(mesh, static_cast<int>(loop.points.size())).empty()) std::abort();
+  const int n = static_cast<int>(loop.points.size());
+  if (!tquad::check_disk_mesh(mesh, n).empty()) std::abort();
+  tquad::Vec3 normal;
+  const bool planar = tquad::planar_normal(loop.points, normal);
+  if (planar && mesh.quads.size() <= 20'000) {
+    tquad::smooth_planar_region(mesh, n, normal);  // throws std::logic_error on an invalid result: a bug
+  }
+  if (n <= 40) {
+    try {
+      const tquad::CornerSearchResult found = tquad::mesh_boundary_best_corners(
+          loop, options, planar ? std::optional<tquad::Vec3>(normal) : std::nullopt, true);
+      if (!tquad::check_disk_mesh(found.mesh, n).empty()) std::abort();
+    } catch (const tquad::InputError&) {
+      std::abort();  // the given corners meshed above, so the search must too
+    }
+  }
   return 0;
 }

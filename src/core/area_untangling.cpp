@@ -17,6 +17,10 @@ constexpr int kMaxPasses = 100;
 // inside the box.
 constexpr double kWallSlope = 1e3;
 
+// The shortest edge a move may leave at the node, over its neighbours' spread (a
+// fuzzed spike of a boundary drew a node onto a boundary node, a zero-length edge).
+constexpr double kMinEdgeRatio = 1e-3;
+
 double cross2(const Vec3& a, const Vec3& b) { return a.x * b.y - a.y * b.x; }
 
 // Signed area (twice the triangle's) of corner j of quad q.
@@ -162,6 +166,13 @@ class AreaUntangler {
     // A gain below rounding of the areas is no gain.
     if (!(best > now + 1e-12 * size * size)) return false;
     const Vec3 target = start + Vec3{best_x, best_y, 0};
+    // Where no place unfolds every corner, the best one can be a neighbour's own
+    // place (its corners' areas 0 instead of negative): a node never goes within
+    // kMinEdgeRatio of the neighbours' spread of a neighbour.
+    for (int k = first; k < last; ++k) {
+      const Vec3& p = param_[next.items[k]];
+      if (std::hypot(p.x - target.x, p.y - target.y) < kMinEdgeRatio * size) return false;
+    }
     if (!place_(n, target)) return false;
     param_[n] = target;
     return true;

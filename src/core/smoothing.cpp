@@ -227,25 +227,31 @@ namespace {
 
 // Corners whose scaled Jacobian against the surface normals (each quad's own where
 // the normal is singular) is below -kInvertedBelow: inverted where the user sees them.
-int inverted_on_surface(const std::vector<Quad>& quads, const std::vector<Vec3>& position,
-                        const std::vector<Vec3>& normal) {
-  int inverted = 0;
+// And quads with an edge under kCollapsedEdgeRatio of their longest.
+struct SurfaceFolds {
+  int inverted = 0, collapsed = 0;
+};
+SurfaceFolds folds_on_surface(const std::vector<Quad>& quads, const std::vector<Vec3>& position,
+                              const std::vector<Vec3>& normal) {
+  SurfaceFolds folds;
   for (const Quad& q : quads) {
     const QuadCorners c = quad_corners({position[q[0]], position[q[1]], position[q[2]], position[q[3]]},
                                        {unit(normal[q[0]]), unit(normal[q[1]]), unit(normal[q[2]]), unit(normal[q[3]])});
-    for (double j : c.jacobian) inverted += j < -kInvertedBelow ? 1 : 0;
+    for (double j : c.jacobian) folds.inverted += j < -kInvertedBelow ? 1 : 0;
+    folds.collapsed += c.collapsed ? 1 : 0;
   }
-  return inverted;
+  return folds;
 }
 
 // Unfolds what the surface shows inverted (area_untangling.h), in the mesh coordinates;
-// kept only if fewer corners are inverted on the surface after it (a corner folded in
+// kept only if fewer corners are inverted on the surface after it and no more quads
+// are collapsed (a corner folded in
 // (u, v) alone, at a cusp, is no reason to move nodes). Returns the moves kept.
 long long unfold_inverted_corners(const std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param,
                                   std::vector<Vec3>& position, std::vector<Vec3>& normal, const PlaceNode& place) {
-  const int before = inverted_on_surface(quads, position, normal);
+  const SurfaceFolds before = folds_on_surface(quads, position, normal);
   const double orientation = orientation_in_coordinates(quads, param);
-  if (before == 0 || orientation == 0) return 0;
+  if (before.inverted == 0 || orientation == 0) return 0;
   const std::vector<Vec3> kept_param = param, kept_position = position, kept_normal = normal;
   const auto place_node = [&](int n, const Vec3& p) {
     Vec3 moved_position, moved_normal;
@@ -255,7 +261,10 @@ long long unfold_inverted_corners(const std::vector<Quad>& quads, int fixed, std
     return true;
   };
   const AreaUntanglingResult result = untangle_corner_areas(quads, fixed, param, orientation, place_node);
-  if (result.moves > 0 && inverted_on_surface(quads, position, normal) < before) return result.moves;
+  if (result.moves > 0) {
+    const SurfaceFolds after = folds_on_surface(quads, position, normal);
+    if (after.inverted < before.inverted && after.collapsed <= before.collapsed) return result.moves;
+  }
   param = kept_param;
   position = kept_position;
   normal = kept_normal;
