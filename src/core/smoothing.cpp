@@ -33,15 +33,25 @@ constexpr double kWorstGain = 1e-3;
 constexpr double kWorstGainFloor = 0.01;
 constexpr double kSumGain = 1e-3;
 
+// The scaled Jacobian is blind to a short edge between good angles (a quad turning
+// into a triangle): a move may not bring any quad around the node to an edge under
+// this fraction of its longest, unless that quad's ratio rises. Without it the
+// compass search drew interior nodes next to boundary nodes: quads under 0.05 went
+// from 0 to 48 on as1-tu-203.stp at D/25, and one of paper_example3_t1.json's to
+// 0.0016.
+constexpr double kShortEdgeRatio = 0.1;
+
 // The corners whose angle a node decides, summarized: the worst, their sum, and
 // whether a quad around it is collapsed.
 struct LocalQuality {
   double worst = 1.0, sum = 0.0;
   int collapsed = 0;
+  double edge_ratio = 1.0;  // the quads' shortest edge over their longest, the lowest
 
   // Whether this (after a move) is better than `before`.
   bool improves_on(const LocalQuality& before) const {
     if (collapsed > before.collapsed) return false;
+    if (edge_ratio < kShortEdgeRatio && edge_ratio < before.edge_ratio) return false;
     // Fewer collapsed quads is a gain of its own, if the worst corner holds.
     if (collapsed < before.collapsed && worst >= before.worst) return true;
     // Around a collapsed quad any gain counts: small steps are what opens it up.
@@ -130,6 +140,13 @@ class Smoother {
         local.sum += c.jacobian[j];
       }
       local.collapsed += c.collapsed ? 1 : 0;
+      double shortest = INFINITY, longest = 0;
+      for (int j = 0; j < 4; ++j) {
+        const double edge = distance(position_[q[j]], position_[q[(j + 1) % 4]]);
+        shortest = std::min(shortest, edge);
+        longest = std::max(longest, edge);
+      }
+      if (longest > 0) local.edge_ratio = std::min(local.edge_ratio, shortest / longest);
     }
     return local;
   }
