@@ -47,11 +47,16 @@ struct LocalQuality {
   double worst = 1.0, sum = 0.0;
   int collapsed = 0;
   double edge_ratio = 1.0;  // the quads' shortest edge over their longest, the lowest
+  double own_worst = 1.0;   // the same corners signed by each quad's own normal
 
   // Whether this (after a move) is better than `before`.
   bool improves_on(const LocalQuality& before) const {
     if (collapsed > before.collapsed) return false;
     if (edge_ratio < kShortEdgeRatio && edge_ratio < before.edge_ratio) return false;
+    // Nor fold a quad in its own plane (its diagonals' normal), where a shell
+    // element's Jacobian is taken, although the surface normals at its corners say
+    // it is fine (a quad spanning a tight curve).
+    if (own_worst < 0 && own_worst < before.own_worst) return false;
     // Fewer collapsed quads is a gain of its own, if the worst corner holds.
     if (collapsed < before.collapsed && worst >= before.worst) return true;
     // Around a collapsed quad any gain counts: small steps are what opens it up.
@@ -135,9 +140,11 @@ class Smoother {
       const int i = static_cast<int>(std::find(q.begin(), q.end(), n) - q.begin());
       const QuadCorners c = quad_corners({position_[q[0]], position_[q[1]], position_[q[2]], position_[q[3]]},
                                          {unit_normal_[q[0]], unit_normal_[q[1]], unit_normal_[q[2]], unit_normal_[q[3]]});
+      const QuadCorners own = quad_corners({position_[q[0]], position_[q[1]], position_[q[2]], position_[q[3]]}, {});
       for (int j : {i, (i + 1) % 4, (i + 3) % 4}) {
         local.worst = std::min(local.worst, c.jacobian[j]);
         local.sum += c.jacobian[j];
+        local.own_worst = std::min(local.own_worst, own.jacobian[j]);
       }
       local.collapsed += c.collapsed ? 1 : 0;
       double shortest = INFINITY, longest = 0;
