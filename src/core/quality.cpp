@@ -47,6 +47,7 @@ QuadCorners quad_corners(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>
   }
   QuadCorners out;
   out.collapsed = shortest < kCollapsedEdgeRatio * longest;
+  out.edge_ratio = longest > 0 ? shortest / longest : 0.0;
   Vec3 own;  // the diagonals' normal, only where a node's normal is zero
   for (int i = 0; i < 4; ++i) {
     const Vec3& a = edge[i];

@@ -33,6 +33,7 @@ double corner_scaled_jacobian(const std::array<Vec3, 4>& quad, int i, const Vec3
 struct QuadCorners {
   std::array<double, 4> jacobian;
   bool collapsed = false;
+  double edge_ratio = 1.0;  // shortest edge over longest (0 when all edges are 0)
 };
 QuadCorners quad_corners(const std::array<Vec3, 4>& quad, const std::array<Vec3, 4>& unit_normal);
 

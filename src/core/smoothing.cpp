@@ -147,13 +147,7 @@ class Smoother {
         local.own_worst = std::min(local.own_worst, own.jacobian[j]);
       }
       local.collapsed += c.collapsed ? 1 : 0;
-      double shortest = INFINITY, longest = 0;
-      for (int j = 0; j < 4; ++j) {
-        const double edge = distance(position_[q[j]], position_[q[(j + 1) % 4]]);
-        shortest = std::min(shortest, edge);
-        longest = std::max(longest, edge);
-      }
-      if (longest > 0) local.edge_ratio = std::min(local.edge_ratio, shortest / longest);
+      local.edge_ratio = std::min(local.edge_ratio, c.edge_ratio);
     }
     return local;
   }

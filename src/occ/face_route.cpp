@@ -38,9 +38,8 @@ constexpr double kGoodEnoughCorner = 0.3;
 // --corners best screens its corner sets on the face's (u, v) loop, where a template
 // mesh costs microseconds, and meshes on the surface only the kSurfaceCandidates best
 // of them (fewest inverted quads, then the best worst and mean scaled Jacobian in
-// (u, v)): a set whose templates fold on the surface costs its repairs and the 3D
-// fallback, 0.1 to 0.25 s a set on faces 5 and 9 of Zylkopf.stp, where meshing every
-// set on the surface made the whole run 12.8 times slower.
+// (u, v)): a set meshed on the surface took up to 0.26 s on faces 5 and 9 of
+// Zylkopf.stp, where meshing every set there made the whole run 12.8 times slower.
 constexpr std::size_t kSurfaceCandidates = 4;
 
 std::vector<std::vector<int>> screened_corner_sets(const FaceBoundary& boundary,
