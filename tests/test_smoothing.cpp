@@ -12,6 +12,7 @@
 #include "core/decomposed_mesher.h"
 #include "core/doublets.h"
 #include "core/hole_rings.h"
+#include "core/max_min_ascent.h"
 #include "core/mesh_validation.h"
 #include "core/quality.h"
 #include "core/reflex_corners.h"
@@ -230,6 +231,68 @@ TEST(Smoothing, GeneratedDomainsStayValidAndTheirWorstNeverDrops) {
               kDomains, sum_before / kDomains, sum_after / kDomains, raised, mean_before / kDomains,
               mean_after / kDomains, merged_total);
   EXPECT_GT(sum_after, sum_before);
+}
+
+// The steepest ascent of a minimum: with one rate, along its gradient; with two that
+// pull apart, the direction where both rise equally (the bisector here); with rates
+// that no direction raises together, none.
+TEST(MaxMinAscent, OneRateRisesAlongItsGradient) {
+  const Ascent ascent = max_min_ascent({Vec3{3, 4, 0}});
+  EXPECT_NEAR(ascent.direction.x, 0.6, 1e-12);
+  EXPECT_NEAR(ascent.direction.y, 0.8, 1e-12);
+  EXPECT_NEAR(ascent.rate, 5.0, 1e-12);
+}
+
+TEST(MaxMinAscent, TwoRatesRiseTogetherBetweenTheirGradients) {
+  // g1 . d and g2 . d are equal along (1, 1)/sqrt(2); along either gradient the
+  // other rate is 0.
+  const Ascent ascent = max_min_ascent({Vec3{1, 0, 0}, Vec3{0, 1, 0}});
+  EXPECT_NEAR(ascent.direction.x, std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(ascent.direction.y, std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(ascent.rate, std::sqrt(0.5), 1e-12);
+  // A third rate that the bisector lowers moves the answer to where all three
+  // rise (d.y > 5 d.x > 0), and none of them rises slower than the rate given.
+  const Ascent three = max_min_ascent({Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{-1, 0.2, 0}});
+  EXPECT_GT(three.rate, 0.0);
+  for (const Vec3& g : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{-1, 0.2, 0}}) {
+    EXPECT_GE(g.x * three.direction.x + g.y * three.direction.y, three.rate - 1e-12);
+  }
+}
+
+TEST(MaxMinAscent, OpposedRatesGiveNoAscent) {
+  // At a maximum of the minimum: every direction lowers one of them.
+  EXPECT_LE(max_min_ascent({Vec3{1, 0, 0}, Vec3{-1, 0, 0}}).rate, 0.0);
+  EXPECT_LE(max_min_ascent({Vec3{1, 0, 0}, Vec3{-0.5, 0.8, 0}, Vec3{-0.5, -0.8, 0}}).rate, 0.0);
+  EXPECT_LE(max_min_ascent({}).rate, 0.0);
+  EXPECT_LE(max_min_ascent({Vec3{0, 0, 0}}).rate, 0.0);
+}
+
+// The ascent's answer is the best direction: no direction of a fine sweep does
+// better on random gradient sets.
+TEST(MaxMinAscent, NoSweptDirectionDoesBetter) {
+  unsigned state = 12345;
+  const auto next = [&] {
+    state = state * 1103515245u + 12345u;
+    return ((state >> 8) & 0xffff) / 32768.0 - 1.0;
+  };
+  for (int trial = 0; trial < 500; ++trial) {
+    std::vector<Vec3> gradients;
+    const int count = 1 + trial % 6;
+    for (int i = 0; i < count; ++i) gradients.push_back({next(), next(), 0.0});
+    const Ascent ascent = max_min_ascent(gradients);
+    double best_swept = -INFINITY;
+    for (int k = 0; k < 3600; ++k) {
+      const double angle = k * 2 * M_PI / 3600;
+      double rate = INFINITY;
+      for (const Vec3& g : gradients) rate = std::min(rate, g.x * std::cos(angle) + g.y * std::sin(angle));
+      best_swept = std::max(best_swept, rate);
+    }
+    if (best_swept > 0) {
+      EXPECT_GE(ascent.rate, best_swept - 1e-9) << "trial " << trial;
+    } else {
+      EXPECT_LE(ascent.rate, 1e-3) << "trial " << trial;
+    }
+  }
 }
 
 }  // namespace

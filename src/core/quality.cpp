@@ -48,23 +48,20 @@ QuadCorners quad_corners(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>
   QuadCorners out;
   out.collapsed = shortest < kCollapsedEdgeRatio * longest;
   out.edge_ratio = longest > 0 ? shortest / longest : 0.0;
-  Vec3 own;  // the diagonals' normal, only where a node's normal is zero
+  Vec3 own = cross(p[2] - p[0], p[3] - p[1]);  // the diagonals' normal
+  const double own_length = norm(own);
+  if (own_length > 0) own = (1.0 / own_length) * own;
   for (int i = 0; i < 4; ++i) {
-    const Vec3& a = edge[i];
-    const Vec3 b = -1.0 * edge[(i + 3) % 4];
     const double lengths = length[i] * length[(i + 3) % 4];
     if (lengths == 0) {
-      out.jacobian[i] = -1.0;
+      out.jacobian[i] = out.own_jacobian[i] = -1.0;
       continue;
     }
-    Vec3 n = unit_normal[i];
-    double n_length = 1.0;
-    if (n.x == 0 && n.y == 0 && n.z == 0) {
-      if (norm(own) == 0) own = cross(p[2] - p[0], p[3] - p[1]);
-      n = own;
-      n_length = norm(own);
-    }
-    out.jacobian[i] = n_length > 0 ? dot(cross(a, b), n) / (lengths * n_length) : 0.0;
+    // (e_next x e_prev) with e_prev = -edge[i - 1].
+    const Vec3 turn = (-1.0 / lengths) * cross(edge[i], edge[(i + 3) % 4]);
+    out.own_jacobian[i] = dot(turn, own);
+    const Vec3& n = unit_normal[i];
+    out.jacobian[i] = n.x == 0 && n.y == 0 && n.z == 0 ? out.own_jacobian[i] : dot(turn, n);
   }
   return out;
 }

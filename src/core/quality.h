@@ -29,9 +29,11 @@ double corner_scaled_jacobian(const std::array<Vec3, 4>& quad, int i, const Vec3
 // All four corners of a quad at once (each edge measured once), each signed by its
 // own node's normal: unit_normal[i] of unit length, or zero (then the quad's own
 // normal, the cross product of its diagonals, stands in). The same values as
-// corner_scaled_jacobian, and whether the quad is_collapsed.
+// corner_scaled_jacobian, and whether the quad is_collapsed. The smoother needs both
+// signings of every corner it decides, so both come from one pass over the edges.
 struct QuadCorners {
   std::array<double, 4> jacobian;
+  std::array<double, 4> own_jacobian;  // each corner signed by the quad's own normal
   bool collapsed = false;
   double edge_ratio = 1.0;  // shortest edge over longest (0 when all edges are 0)
 };

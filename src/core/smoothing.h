@@ -15,9 +15,10 @@
 //   - first the mean of its edge neighbours (Laplacian), whole, half or a quarter of
 //     the way; the move is kept if it raises the worst corner there, or keeps it and
 //     raises the sum of those corners;
-//   - then, where the worst corner there is under kSearchBelow, a compass search that
-//     raises it (eight directions, steps from a quarter of the shortest edge halving
-//     down to 1/64 of it).
+//   - then, where the worst corner there is under search_below, the steepest ascent
+//     of that worst corner (max_min_ascent.h): gradients by finite differences, a
+//     step predicted to where another corner would become the worst, halved until
+//     the move is kept.
 #pragma once
 
 #include <optional>
@@ -36,7 +37,7 @@ using PlaceNode = std::function<bool(const Vec3& param, Vec3& position, Vec3& no
 
 struct SmoothingOptions {
   int passes = 8;
-  // Corners under this get the compass search (the Laplacian alone barely moves a
+  // Corners under this get the steepest ascent (the Laplacian alone barely moves a
   // node whose neighbours are themselves badly placed).
   double search_below = 0.6;
   // Nodes whose corners around all reach this are left alone unless a neighbour moves.

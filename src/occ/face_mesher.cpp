@@ -147,9 +147,15 @@ FaceMeshResult mesh_in_space(const TopoDS_Face& face, const FaceBoundary& b, con
 }  // namespace
 
 Vec3 outer_normal(const BRepAdaptor_Surface& surface, bool reversed, const Vec3& uv) {
+  Vec3 point;
+  return outer_normal(surface, reversed, uv, point);
+}
+
+Vec3 outer_normal(const BRepAdaptor_Surface& surface, bool reversed, const Vec3& uv, Vec3& point) {
   gp_Pnt p;
   gp_Vec du, dv;
   surface.D1(uv.x, uv.y, p, du, dv);
+  point = to_vec3(p);
   if (singular_normal(du, dv)) return Vec3{};
   gp_Vec n = du.Crossed(dv);
   if (reversed) n.Reverse();

@@ -59,6 +59,8 @@ inline bool singular_normal(const gp_Vec& du, const gp_Vec& dv) {
 // The face's outer normal at (u, v) (not unit length), zero where the surface is
 // singular (a pole, a collapsed side: its direction is noise there).
 Vec3 outer_normal(const BRepAdaptor_Surface& surface, bool reversed, const Vec3& uv);
+// The point at uv and outer_normal there, from one evaluation of the surface.
+Vec3 outer_normal(const BRepAdaptor_Surface& surface, bool reversed, const Vec3& uv, Vec3& point);
 
 // A quad whose centre lies farther than this many of its diagonals off the surface
 // (along the normal at the centre of its corners' parameters) cuts across the surface

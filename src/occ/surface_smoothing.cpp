@@ -28,8 +28,7 @@ void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<
   for (const Vec3& p : mesh.param) normal.push_back(outer_normal(surface, reversed, to_uv(p)));
   const PlaceNode place = [&](const Vec3& p, Vec3& at, Vec3& n) {
     const Vec3 uv = to_uv(p);
-    at = to_vec3(surface.Value(uv.x, uv.y));
-    n = outer_normal(surface, reversed, uv);
+    n = outer_normal(surface, reversed, uv, at);
     return norm(n) > 0;
   };
   // Doublets merged where the merged quad is no worse; where some are not, also with
