@@ -34,6 +34,17 @@ std::vector<Vec3> between(const Vec3& a, const Vec3& b, int segments) {
   return out;
 }
 
+// Whether every turn of the loop is to the left (or straight): then the loop's arcs
+// scaled towards the centroid, and any blend of them with the square's sides, stay
+// inside it.
+bool is_convex(const std::vector<Vec3>& p) {
+  const std::size_t n = p.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (orient2d(p[i], p[(i + 1) % n], p[(i + 2) % n]) < 0) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 std::optional<QuadMesh> mesh_disk_o_grid(const PlanarDomain& domain, const MeshOptions& options) {
@@ -93,11 +104,20 @@ std::optional<QuadMesh> mesh_disk_o_grid(const PlanarDomain& domain, const MeshO
     for (const Vec3& v : between(square[k], p[corner[k]], layers)) spoke[k].push_back(add(v));
     spoke[k].push_back(corner[k]);
   }
-  // Square side k from q[k] to q[k+1], arc[k] segments.
+  // Square side k from q[k] to q[k+1], arc[k] segments, bowed towards the loop's arc
+  // on a convex loop (bowed_side).
+  const bool bow = is_convex(p);
   std::array<std::vector<NodeId>, 4> side;
   for (int k = 0; k < 4; ++k) {
     side[k].push_back(q[k]);
-    for (const Vec3& v : between(square[k], square[(k + 1) % 4], arc[k])) side[k].push_back(add(v));
+    std::vector<Vec3> inner = between(square[k], square[(k + 1) % 4], arc[k]);
+    if (bow) {
+      for (int i = 1; i < arc[k]; ++i) {
+        const Vec3 on_arc = c + kSquareScale * (p[(corner[k] + i) % n] - c);
+        inner[i - 1] = inner[i - 1] + kSideBow * (on_arc - inner[i - 1]);
+      }
+    }
+    for (const Vec3& v : inner) side[k].push_back(add(v));
     side[k].push_back(q[(k + 1) % 4]);
   }
 

@@ -11,7 +11,7 @@
 // from point 0); the square's corners lie on the segments from the centroid to the
 // arcs' ends, kSquareScale of the way out; the connectors get the count that best
 // fits their length at the loop's mean spacing. Every patch has equal opposite counts
-// (T0).
+// (T0). On a convex loop the square's sides bow towards the loop (kSideBow).
 #pragma once
 
 #include <optional>
@@ -24,6 +24,13 @@ namespace tquad {
 // Where the square's corners lie, as a fraction of the way from the centroid to the
 // loop (0.5 to 0.6 is usual for an O-grid of a circle).
 constexpr double kSquareScale = 0.55;
+
+// How far the square's sides bow from straight towards the loop's arcs scaled by
+// kSquareScale. Straight sides leave the square's corners at 90 degrees inside and
+// 135 outside (scaled Jacobian 0.707 in the patches around); a third of the way
+// turns each side's ends by about 15 degrees on a circle, so both corners near 120
+// (0.87), above the smoother's good_enough, and the smoother has little left to do.
+constexpr double kSideBow = 1.0 / 3;
 
 // The mesh (the loop's points first, bit-exact), or nothing when the domain is not
 // such a disk: a hole, fewer than 8 points, a sharp CAD vertex, or the square or a
