@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/input_error.h"
+#include "core/patch_stitching.h"
 #include "core/planar_predicates.h"
 #include "core/planar_self_intersection.h"
 
@@ -124,21 +125,12 @@ std::optional<QuadMesh> mesh_disk_o_grid(const PlanarDomain& domain, const MeshO
   // Each patch as a loop of node ids with its corners, meshed by the templates.
   const auto mesh_patch = [&](const std::vector<std::vector<NodeId>>& sides) {
     std::vector<NodeId> ids;
-    BoundaryLoop region;
+    std::vector<int> corners;
     for (const std::vector<NodeId>& s : sides) {
-      region.corners.push_back(static_cast<int>(ids.size()));
+      corners.push_back(static_cast<int>(ids.size()));
       ids.insert(ids.end(), s.begin(), s.end() - 1);
     }
-    for (NodeId id : ids) region.points.push_back(mesh.nodes[id]);
-    const QuadMesh patch = mesh_boundary(region, options);
-    const NodeId base = static_cast<NodeId>(mesh.nodes.size());
-    const int m = static_cast<int>(ids.size());
-    mesh.nodes.insert(mesh.nodes.end(), patch.nodes.begin() + m, patch.nodes.end());
-    for (Quad quad : patch.quads) {
-      for (NodeId& v : quad) v = v < m ? ids[v] : base + (v - m);
-      mesh.quads.push_back(quad);
-    }
-    return patch.template_tree;
+    return append_patch(mesh, ids, corners, options);
   };
   const auto reversed = [](std::vector<NodeId> v) {
     std::reverse(v.begin(), v.end());

@@ -66,8 +66,94 @@ bool is_disk_around_pole(const FaceBoundary& b) {
 Vec3 polar_to_uv(const PolarMap& m, const Vec3& xy) {
   const double r = std::hypot(xy.x, xy.y);
   double theta = std::atan2(-m.side * xy.y, xy.x);
-  if (theta < 0) theta += 2 * M_PI;
-  return {m.u_ref + theta * m.period / (2 * M_PI), m.pole_v + m.side * r * m.radius, 0.0};
+  double turns;  // of the period, from u_ref
+  if (m.angle < 2 * M_PI) {
+    turns = theta / m.angle + 0.5;  // a sector: theta in [-angle / 2, angle / 2], no wrap
+  } else {
+    if (theta < 0) theta += 2 * M_PI;
+    turns = theta / (2 * M_PI);
+  }
+  return {m.u_ref + turns * m.period, m.pole_v + m.side * r * m.radius, 0.0};
+}
+
+namespace {
+
+// How far the surface turns around its pole at v = pole_v: the length of the circle
+// v = pole_v + side * delta over its mean distance from the pole, for delta a
+// thousandth of the face's extent in v (64 chords: 4e-4 short of the limit).
+double angle_around_pole(const BRepAdaptor_Surface& surface, const PolarMap& m) {
+  const int samples = 64;
+  const double v = m.pole_v + m.side * 1e-3 * m.radius;
+  const gp_Pnt pole = surface.Value(m.u_ref, m.pole_v);
+  double circle = 0, distance_sum = 0;
+  gp_Pnt previous = surface.Value(m.u_ref, v);
+  for (int i = 1; i <= samples; ++i) {
+    const gp_Pnt p = surface.Value(m.u_ref + m.period * i / samples, v);
+    circle += p.Distance(previous);
+    distance_sum += p.Distance(pole);
+    previous = p;
+  }
+  return distance_sum > 0 ? circle / (distance_sum / samples) : 0.0;
+}
+
+}  // namespace
+
+std::optional<PoleSector> pole_sector(const FaceBoundary& b, const TopoDS_Face& face) {
+  if (!is_disk_around_pole(b) || b.inner_wires > 0 || b.polar) return std::nullopt;
+  const BRepAdaptor_Surface surface(face);
+  if (!surface.IsUPeriodic()) return std::nullopt;
+  const int n = static_cast<int>(b.nodes.size());
+  PolarMap m;
+  m.period = surface.UPeriod();
+  m.pole_v = b.pole_v;
+  m.u_ref = b.uv[0].x;
+  m.radius = 0;
+  for (const Vec3& p : b.uv) {
+    m.u_ref = std::min(m.u_ref, p.x);
+    m.radius = std::max(m.radius, std::abs(p.y - m.pole_v));
+  }
+  if (!(m.radius > 0)) return std::nullopt;
+  // The apex: the one loop node on the pole.
+  std::vector<int> apex;
+  for (int i = 0; i < n; ++i) {
+    if (std::abs(b.uv[i].y - m.pole_v) <= 1e-9 * m.radius) apex.push_back(i);
+  }
+  if (apex.size() != 1) return std::nullopt;
+  m.side = b.uv[(apex[0] + n / 2) % n].y > m.pole_v ? 1.0 : -1.0;
+  m.angle = angle_around_pole(surface, m);
+  if (!(m.angle > 0) || m.angle >= kSectorAngleBelow) return std::nullopt;
+  // The seam's ends at the rim: where the loop passes between a seam edge and
+  // another one, the apex aside. A sharp vertex elsewhere on the rim would be a
+  // corner the sector's halves miss.
+  PoleSector sector;
+  sector.apex = apex[0];
+  std::vector<int> ends;
+  const int edges = static_cast<int>(b.edge_start.size());
+  for (int k = 0; k < edges; ++k) {
+    const int start = b.edge_start[k];
+    if (start == sector.apex) continue;
+    if (b.is_seam[k] != b.is_seam[(k + edges - 1) % edges]) {
+      ends.push_back(start);
+    } else if (b.turn[k] > kSectorRimTurn) {
+      return std::nullopt;
+    }
+  }
+  if (ends.size() != 2) return std::nullopt;
+  // In walking order: the apex, the first side, the rim, the second side.
+  const auto ahead = [&](int from, int to) { return ((to - from) % n + n) % n; };
+  if (ahead(sector.apex, ends[1]) < ahead(sector.apex, ends[0])) std::swap(ends[0], ends[1]);
+  sector.rim_start = ends[0];
+  sector.rim_end = ends[1];
+  FaceBoundary& out = sector.boundary;
+  out = b;
+  out.uv.clear();
+  for (const Vec3& p : b.uv) {
+    const double theta = m.angle * ((p.x - m.u_ref) / m.period - 0.5);
+    const double r = std::abs(p.y - m.pole_v) / m.radius;
+    out.uv.push_back({r * std::cos(theta), -m.side * r * std::sin(theta), 0.0});
+  }
+  out.polar = m;
+  return sector;
 }
 
 FaceBoundary around_pole(const FaceBoundary& b, const TopoDS_Face& face, int face_index,

@@ -3,6 +3,7 @@
 // 3D curve's parameter) and the wire's vertices with their turning angles.
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,8 +17,13 @@ namespace tquad {
 // period, r = |v - pole_v| / radius, and (x, y) = (r cos theta, -side r sin theta),
 // side = +1 when the face lies at v > pole_v. The sign keeps the (u, v) orientation:
 // (u, v) -> (theta, r) has Jacobian sign `side`, (theta, r) -> (r cos, r sin) sign -1.
+//
+// With `angle` under 2 pi the map is a sector instead (pole_sector): theta = angle
+// ((u - u_ref) / period - 1/2), so the seam's two sides lie at -angle / 2 and
+// +angle / 2, and the pole is the sector's apex.
 struct PolarMap {
   double u_ref = 0, period = 1, pole_v = 0, radius = 1, side = 1;
+  double angle = 2 * M_PI;
 };
 
 // A closed loop of shared nodes with their (u, v): an inner wire (a hole's rim).
@@ -57,6 +63,28 @@ bool is_disk_around_pole(const FaceBoundary& boundary);
 // InputError when the face is not periodic in u.
 FaceBoundary around_pole(const FaceBoundary& boundary, const TopoDS_Face& face, int face_index,
                          const std::vector<Vec3>& nodes);
+
+// A cone's tip (or any pole where the surface turns less than kSectorAngleBelow
+// around it) flattened: the face cut along its seam is a sector of the angle the
+// surface turns around the pole (2 pi sin(half-angle) for a cone; measured from the
+// surface near the pole), radius along v. Its loop keeps the seam's nodes on both
+// sides and the pole's node as the apex. For a cone the sector is its development,
+// so quads keep their shape on the surface. Nothing when the face is not such (no single apex node, a
+// sharp vertex on the rim, the angle too wide). mesh_sector_in_halves
+// (core/pole_sector_mesh.h) meshes it.
+struct PoleSector {
+  FaceBoundary boundary;  // uv holds the sector's (x, y); polar set, its angle under 2 pi
+  // Loop positions: the loop runs apex -> rim_start (the seam's first side) -> rim_end
+  // (the rim) -> apex (the seam's second side).
+  int apex = 0, rim_start = 0, rim_end = 0;
+};
+// Two quads meet the apex. On a cone their corners there are 2a (half-angle a), the
+// disk's four 2 asin(sin a sin 45 deg): the sector's are the better up to a near 55
+// degrees (a sector of 295 degrees); wider, only the disk is tried. In between both
+// are, and the better mesh stays.
+constexpr double kSectorAngleBelow = 300.0 * M_PI / 180.0;
+constexpr double kSectorRimTurn = 20.0 * M_PI / 180.0;  // a sharper rim vertex: no sector
+std::optional<PoleSector> pole_sector(const FaceBoundary& boundary, const TopoDS_Face& face);
 
 // (u, v) of a polar (x, y).
 Vec3 polar_to_uv(const PolarMap& map, const Vec3& xy);

@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "core/disk_o_grid.h"
+#include "core/pole_sector_mesh.h"
 #include "core/input_error.h"
 #include "core/planar_self_intersection.h"
 #include "core/quality.h"
@@ -67,7 +68,7 @@ void put_a_node_on_the_pole(QuadMesh& mesh, int boundary_points) {
 // surface and checked; `start`: when building it began.
 FaceMeshResult place_parameter_mesh(const TopoDS_Face& face, const FaceBoundary& b, const std::vector<Vec3>& nodes,
                                     QuadMesh uv_mesh, std::chrono::steady_clock::time_point start) {
-  if (b.polar) put_a_node_on_the_pole(uv_mesh, static_cast<int>(b.nodes.size()));
+  if (b.polar && b.polar->angle >= 2 * M_PI) put_a_node_on_the_pole(uv_mesh, static_cast<int>(b.nodes.size()));
   FaceMeshResult out;
   out.boundary_nodes = b.nodes;
   take_quads(uv_mesh, !runs_counter_clockwise(b, face), out);
@@ -292,6 +293,15 @@ std::optional<FaceMeshResult> mesh_polar_disk(const TopoDS_Face& face, const Fac
   }
   for (std::size_t i = 0; i < boundary.uv.size(); ++i) mesh->nodes[i] = boundary.uv[i];  // bit-exact
   return place_parameter_mesh(face, boundary, nodes, std::move(*mesh), start);
+}
+
+std::optional<FaceMeshResult> mesh_pole_sector(const TopoDS_Face& face, const PoleSector& sector,
+                                               const std::vector<Vec3>& nodes, const MeshOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<QuadMesh> mesh =
+      mesh_sector_in_halves(sector.boundary.uv, sector.apex, sector.rim_start, sector.rim_end, options);
+  if (!mesh) return std::nullopt;
+  return place_parameter_mesh(face, sector.boundary, nodes, std::move(*mesh), start);
 }
 
 std::string corner_text(const FaceBoundary& b, const std::vector<int>& corners) {

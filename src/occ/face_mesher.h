@@ -101,6 +101,11 @@ FaceMeshResult mesh_face(const ShapeIndex& index, int face, const FaceBoundary& 
 std::optional<FaceMeshResult> mesh_polar_disk(const TopoDS_Face& face, const FaceBoundary& boundary,
                                               const std::vector<Vec3>& nodes, const MeshOptions& options);
 
+// A cone's tip flattened into its sector (pole_sector) and meshed in two halves
+// (core/pole_sector_mesh.h); nothing when the halves do not fit.
+std::optional<FaceMeshResult> mesh_pole_sector(const TopoDS_Face& face, const PoleSector& sector,
+                                               const std::vector<Vec3>& nodes, const MeshOptions& options);
+
 // "at vertices 3, 7, 8, 12" (or "node n" for a corner where no wire edge starts).
 std::string corner_text(const FaceBoundary& boundary, const std::vector<int>& corners);
 

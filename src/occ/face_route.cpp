@@ -81,10 +81,11 @@ std::vector<std::vector<int>> screened_corner_sets(const FaceBoundary& boundary,
 //     (mapped_ring.h), and the O-grid of two halves (o_grid.h, face_decomposed.h);
 //   - more holes, or when the above leave inverted quads or a worst corner under
 //     kGoodEnoughCorner: the face decomposition (face_decomposed.h), any outline;
-//   - a disk around a pole: polar templates (no decomposition).
+//   - a disk around a pole: polar templates (no decomposition), and a cone's tip as
+//     the apex of its flattened sector (pole_sector).
 // The best mesh is kept and smoothed on the surface; inverted quads that remain refuse the face unless
 // allow_inverted (never a silent bad mesh).
-FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary& boundary,
+FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary& boundary, const PoleSector* sector,
                               const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size) {
   const auto start = std::chrono::steady_clock::now();
   const std::string name = "face " + std::to_string(f);
@@ -126,6 +127,13 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
         if (auto disk = mesh_polar_disk(index.face(f), boundary, nodes, options.templates)) keep(std::move(*disk));
       } catch (const std::exception& e) {  // the corner routes stand
         if (!best) note_refusal(e);
+      }
+      if (sector) {
+        try {
+          if (auto tip = mesh_pole_sector(index.face(f), *sector, nodes, options.templates)) keep(std::move(*tip));
+        } catch (const std::exception& e) {  // the disk routes stand
+          if (!best) note_refusal(e);
+        }
       }
     }
     // A disk's O-grid (a square and four patches around it) beats corners on a smooth
@@ -210,10 +218,12 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
   FaceOutcome outcome;
   try {
     outcome.boundary = face_boundary(index, f, edges, nodes);
+    std::optional<PoleSector> sector;
     if (is_disk_around_pole(outcome.boundary)) {
+      sector = pole_sector(outcome.boundary, index.face(f));
       outcome.boundary = around_pole(outcome.boundary, index.face(f), f, nodes);
     }
-    outcome.mesh = best_face_mesh(index, f, outcome.boundary, nodes, options, size);
+    outcome.mesh = best_face_mesh(index, f, outcome.boundary, sector ? &*sector : nullptr, nodes, options, size);
     outcome.ok = true;
   } catch (const InvertedQuadsError& e) {
     outcome.reason = e.what();

@@ -1,0 +1,21 @@
+#include "core/patch_stitching.h"
+
+namespace tquad {
+
+std::string append_patch(QuadMesh& mesh, const std::vector<NodeId>& loop, const std::vector<int>& corners,
+                         const MeshOptions& options) {
+  BoundaryLoop region;
+  region.corners = corners;
+  for (NodeId id : loop) region.points.push_back(mesh.nodes[id]);
+  const QuadMesh patch = mesh_boundary(region, options);
+  const NodeId base = static_cast<NodeId>(mesh.nodes.size());
+  const int m = static_cast<int>(loop.size());
+  mesh.nodes.insert(mesh.nodes.end(), patch.nodes.begin() + m, patch.nodes.end());
+  for (Quad quad : patch.quads) {
+    for (NodeId& v : quad) v = v < m ? loop[v] : base + (v - m);
+    mesh.quads.push_back(quad);
+  }
+  return patch.template_tree;
+}
+
+}  // namespace tquad
