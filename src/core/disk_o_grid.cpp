@@ -64,7 +64,14 @@ std::optional<QuadMesh> mesh_disk_o_grid(const PlanarDomain& domain, const MeshO
       }
     }
   }
-  const int a = n / 4, b = n / 2 - a;
+  // With a and b both even (possible when n / 2 is), the middle square has a grid
+  // node at its centre: the pole of a disk around one (a cone's tip), with four
+  // quads around it alike. Otherwise the node nearest the pole is moved onto it and
+  // its quads differ: at the tip of a cone of half-angle 45 degrees (52 points,
+  // 13 + 13) the worst corner there was 0.64 where four alike give 0.87.
+  int a = n / 4;
+  if ((n / 2) % 2 == 0 && a % 2 == 1) --a;
+  const int b = n / 2 - a;
   const std::array<int, 4> corner{0, a, a + b, 2 * a + b};
   const std::array<int, 4> arc{a, b, a, b};
   const Vec3 c = centroid(p);
