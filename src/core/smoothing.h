@@ -6,8 +6,9 @@
 // transition, skewed quads along a cut. This pass moves each interior node in the
 // mesh's own coordinates (a face's (u, v), or a plane), evaluates the surface there,
 // and keeps a move only if the worst corner whose angle it decides (the scaled
-// Jacobian against the surface normal at each corner's node) does not drop and no quad
-// around it collapses. So the mesh's worst element never gets worse, and a node moves
+// Jacobian against the surface normal at each corner's node, and in the quad's own
+// plane) does not drop and no quad around it collapses. So the mesh's worst element
+// never gets worse, and a node moves
 // only where that helps its quads. Each pass visits nodes in index order
 // (deterministic: the same mesh for any thread count). Folded corners are first
 // unfolded by untangle_corner_areas (area_untangling.h), which the worst-corner rule
@@ -18,7 +19,10 @@
 //   - then, where the worst corner there is under search_below, the steepest ascent
 //     of that worst corner (max_min_ascent.h): gradients by finite differences, a
 //     step predicted to where another corner would become the worst, halved until
-//     the move is kept.
+//     the move is kept; where it is under good_enough only, the steepest ascent of
+//     the corners' sum, the worst held.
+// Each corner is judged by the lower of its scaled Jacobian against the surface
+// normals and in its quad's own plane.
 #pragma once
 
 #include <optional>
