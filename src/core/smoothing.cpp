@@ -135,7 +135,11 @@ class Smoother {
         // Where a corner is still inverted, also the compass search: across a fold
         // the finite differences mislead the ascent. Measured on the 3,000 mildly
         // non-convex generated boundaries: 6 keep an inverted quad without it, 5 with.
-        if (here.worst < 0) moved = compass_search(n, here) || moved;
+        // So too around a collapsed quad (an edge under kCollapsedEdgeRatio of its
+        // longest, next to a tiny CAD edge): its corners may be fine, and nothing
+        // but the edge ratio says which way to go. Without it 2 quads of
+        // U_Joint_2.stp at D/100 stayed collapsed.
+        if (here.worst < 0 || here.collapsed > 0) moved = compass_search(n, here) || moved;
         if (!moved) continue;
         ++moves;
         next[n] = 1;
