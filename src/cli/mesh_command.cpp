@@ -287,7 +287,8 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
       report["interval_chains"] = {{"chains", shape_result.interval_chains},
                                    {"edges", shape_result.chained_edges},
                                    {"balanced_bands", shape_result.balanced_bands},
-                                   {"balanced_rings", shape_result.balanced_rings}};
+                                   {"balanced_rings", shape_result.balanced_rings},
+                                   {"quartered_pole_rims", shape_result.quartered_pole_rims}};
       nlohmann::ordered_json changes = nlohmann::ordered_json::array();
       for (const IntervalChange& c : shape_result.changes) {
         changes.push_back({{"edge", c.edge}, {"from", c.from}, {"to", c.to}});

@@ -98,6 +98,28 @@ double angle_around_pole(const BRepAdaptor_Surface& surface, const PolarMap& m) 
 
 }  // namespace
 
+double face_pole_angle(const TopoDS_Face& face) {
+  const BRepAdaptor_Surface surface(face);
+  if (!surface.IsUPeriodic()) return 0.0;
+  for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+    if (!BRep_Tool::Degenerated(edge)) continue;
+    double first = 0, last = 0;
+    const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+    if (pcurve.IsNull()) return 0.0;
+    double u_min = 0, u_max = 0, v_min = 0, v_max = 0;
+    BRepTools::UVBounds(face, u_min, u_max, v_min, v_max);
+    PolarMap m;
+    m.period = surface.UPeriod();
+    m.u_ref = u_min;
+    m.pole_v = pcurve->Value(0.5 * (first + last)).Y();
+    m.side = 0.5 * (v_min + v_max) > m.pole_v ? 1.0 : -1.0;
+    m.radius = std::max(std::abs(v_min - m.pole_v), std::abs(v_max - m.pole_v));
+    return m.radius > 0 ? angle_around_pole(surface, m) : 0.0;
+  }
+  return 0.0;
+}
+
 std::optional<PoleSector> pole_sector(const FaceBoundary& b, const TopoDS_Face& face) {
   if (!is_disk_around_pole(b) || b.inner_wires > 0 || b.polar) return std::nullopt;
   const BRepAdaptor_Surface surface(face);

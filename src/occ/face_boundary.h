@@ -86,6 +86,11 @@ constexpr double kSectorAngleBelow = 300.0 * M_PI / 180.0;
 constexpr double kSectorRimTurn = 20.0 * M_PI / 180.0;  // a sharper rim vertex: no sector
 std::optional<PoleSector> pole_sector(const FaceBoundary& boundary, const TopoDS_Face& face);
 
+// How far the surface of a face with a pole (a degenerate edge) turns around it, in
+// radians, measured next to the pole: 2 pi sin(half-angle) on a cone, 2 pi on a
+// sphere; 0 when the face has no pole or is not periodic in u.
+double face_pole_angle(const TopoDS_Face& face);
+
 // (u, v) of a polar (x, y).
 Vec3 polar_to_uv(const PolarMap& map, const Vec3& xy);
 

@@ -15,6 +15,7 @@
 #include "core/input_error.h"
 #include "core/parity_pairing.h"
 #include "occ/band_balance.h"
+#include "occ/pole_rims.h"
 #include "occ/ring_balance.h"
 
 namespace tquad {
@@ -180,6 +181,9 @@ IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector
   // Faces left odd are made even by changing whole chains (which keeps their faces
   // mapped) or single edges.
   make_faces_even(index, meshed, lengths, size, segments, floor, chains);
+  // Disks around a pole want a multiple of 4 on their rim (pole_rims.h); steps of 2
+  // keep the parities just made.
+  report.quartered_pole_rims = quarter_pole_rims(index, meshed, goals, floors, segments, chains);
   for (int e = 0; e < edges; ++e) {
     if (segments[e] != before[e]) report.changes.push_back({e, before[e], segments[e]});
   }

@@ -63,6 +63,7 @@ struct IntervalReport {
   int chained_edges = 0;
   int balanced_bands = 0;               // faces one segment wide given equal long sides
   int balanced_rings = 0;               // faces of two loops given equal totals (ring_balance.h)
+  int quartered_pole_rims = 0;          // disks around a pole given a multiple of 4 (pole_rims.h)
 };
 
 IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector<char>& meshed,

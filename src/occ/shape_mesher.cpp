@@ -258,6 +258,7 @@ class ShapeMeshContext {
     result_.chained_edges = intervals.chained_edges;
     result_.balanced_bands = intervals.balanced_bands;
     result_.balanced_rings = intervals.balanced_rings;
+    result_.quartered_pole_rims = intervals.quartered_pole_rims;
     // Before anything is allocated: a face of E boundary segments has at least
     // E / 2 - 1 quads (nodes = 1 + quads + E / 2 - holes, and its E boundary nodes).
     long long at_least = 0;

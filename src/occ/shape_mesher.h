@@ -87,6 +87,7 @@ struct ShapeMeshResult {
   int chained_edges = 0;                 // edges in those chains
   int balanced_bands = 0;                // faces one segment wide given equal long sides
   int balanced_rings = 0;                // faces of two loops given equal totals
+  int quartered_pole_rims = 0;           // disks around a pole given a multiple of 4 on their rim
   // Edges of meshed faces that lie on each other without being one edge (the file's
   // faces are not sewn there): the mesh has a crack along each (unsewn_edges.h).
   std::vector<UnsewnEdgePair> unsewn_edges;

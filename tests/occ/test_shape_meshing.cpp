@@ -239,7 +239,8 @@ TEST(ShapeMeshing, SharpConeTipsAreMetByTwoQuads) {
   // around the pole). On sharp tips the sector wins; from about 30 degrees its
   // halves (quarter disks and wider, one long arc against two short sides) mesh
   // worse than the disk, which then stays. Each mesh is checked like the other
-  // shapes (valid on the surface, closed); the corner at the tip is printed.
+  // shapes (valid on the surface, closed); the corner at the tip is printed and
+  // must come near the bound of the layout chosen.
   for (double degrees : {10.0, 18.4, 30.0, 45.0, 60.0}) {
     SCOPED_TRACE(degrees);
     const double a = degrees * M_PI / 180;
@@ -266,12 +267,12 @@ TEST(ShapeMeshing, SharpConeTipsAreMetByTwoQuads) {
     const double best_two = std::sin(2 * a), best_four = std::sin(2 * std::asin(std::sin(a) * std::sqrt(0.5)));
     std::printf("[ quality  ] cone of half-angle %4.1f deg: %d quads at the tip, worst corner there %.3f "
                 "(two at best %.3f, four %.3f)\n", degrees, around, worst, best_two, best_four);
-    if (degrees < 20) {
-      EXPECT_EQ(around, 2);
-      EXPECT_GT(worst, 0.9 * best_two);  // measured: 0.337 of 0.342, 0.562 of 0.599
-    } else {
-      EXPECT_TRUE(around == 2 || around == 4) << around;
-    }
+    if (degrees < 20) EXPECT_EQ(around, 2);
+    ASSERT_TRUE(around == 2 || around == 4) << around;
+    // Near the bound of the layout chosen. Four alike need the pole on a grid node of
+    // the disk's middle square, so a rim count that is a multiple of 4
+    // (pole_rims.h): the 60-degree cone's tip was 0.80 of 0.97 without it.
+    EXPECT_GT(worst, 0.9 * (around == 2 ? best_two : best_four));
   }
 }
 
