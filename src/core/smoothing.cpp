@@ -1,27 +1,28 @@
 #include "core/smoothing.h"
-#include <string>
-#include <stdexcept>
-#include "core/mesh_validation.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "core/area_untangling.h"
-#include "core/max_min_ascent.h"
 #include "core/doublets.h"
-#include "core/reflex_corners.h"
+#include "core/max_min_ascent.h"
+#include "core/mesh_validation.h"
 #include "core/node_adjacency.h"
 #include "core/quality.h"
+#include "core/reflex_corners.h"
 
 namespace tquad {
 
 namespace {
 
-// The steepest ascent of the worst corner: finite differences over kGradientStep of
-// the shortest edge around the node (in the mesh coordinates); corners within
-// kActiveBand of the worst count as at it; steps from kLargestStep of that edge down
-// to kSmallestStep; at most kAscentIterations steps per visit.
+// The steepest ascents (of the worst corner, of the corners' sum): finite differences
+// over kGradientStep of the shortest edge around the node (in the mesh coordinates);
+// corners within kActiveBand of the worst count as at it; steps from kLargestStep of
+// that edge down to kSmallestStep; at most kAscentIterations (kSumAscentIterations)
+// steps per visit.
 constexpr double kGradientStep = 1.0 / 256;
 constexpr double kActiveBand = 0.01;
 constexpr double kLargestStep = 0.25;
@@ -31,8 +32,8 @@ constexpr int kSumAscentIterations = 2;
 
 // The compass search's eight directions (unit length, along the mesh coordinates;
 // in each node's local frame instead, 7 rather than 5 of the 3,000 mildly non-convex
-// generated boundaries kept an inverted quad), and
-// how many moves it takes at one step size.
+// generated boundaries kept an inverted quad), and how many moves it takes at one
+// step size.
 constexpr double kHalfSqrt2 = 0.70710678118654752440;
 const std::array<Vec3, 8> kCompass = {Vec3{1, 0, 0},   Vec3{kHalfSqrt2, kHalfSqrt2, 0},
                                       Vec3{0, 1, 0},   Vec3{-kHalfSqrt2, kHalfSqrt2, 0},
@@ -57,9 +58,9 @@ constexpr double kSumGain = 1e-3;
 // The scaled Jacobian is blind to a short edge between good angles (a quad turning
 // into a triangle): a move may not bring any quad around the node to an edge under
 // this fraction of its longest, unless that quad's ratio rises. Without it the
-// compass search that preceded the ascent drew interior nodes next to boundary nodes: quads under 0.05 went
-// from 0 to 48 on as1-tu-203.stp at D/25, and one of paper_example3_t1.json's to
-// 0.0016.
+// compass search that preceded the ascents drew interior nodes next to boundary
+// nodes: quads under 0.05 went from 0 to 48 on as1-tu-203.stp at D/25, and one of
+// paper_example3_t1.json's to 0.0016.
 constexpr double kShortEdgeRatio = 0.1;
 
 // A corner as the smoother judges it: the lower of its scaled Jacobian against the

@@ -135,10 +135,11 @@ std::optional<PoleSector> pole_sector(const FaceBoundary& b, const TopoDS_Face& 
     m.radius = std::max(m.radius, std::abs(p.y - m.pole_v));
   }
   if (!(m.radius > 0)) return std::nullopt;
-  // The apex: the one loop node on the pole.
+  // The apex: the one loop node on the pole (within a millionth of the face's
+  // extent in v: pcurves of other systems' files end there only to their tolerance).
   std::vector<int> apex;
   for (int i = 0; i < n; ++i) {
-    if (std::abs(b.uv[i].y - m.pole_v) <= 1e-9 * m.radius) apex.push_back(i);
+    if (std::abs(b.uv[i].y - m.pole_v) <= 1e-6 * m.radius) apex.push_back(i);
   }
   if (apex.size() != 1) return std::nullopt;
   m.side = b.uv[(apex[0] + n / 2) % n].y > m.pole_v ? 1.0 : -1.0;
