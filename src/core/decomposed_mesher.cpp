@@ -8,6 +8,7 @@
 #include "core/cut_intervals.h"
 #include "core/hole_rings.h"
 #include "core/input_error.h"
+#include "core/patch_stitching.h"
 #include "core/quality.h"
 #include "core/untangle.h"
 
@@ -63,30 +64,23 @@ QuadMesh mesh_decomposed_domain(const PlanarDomain& domain, const FaceDecomposit
   }
   std::string trees;
   for (std::size_t p = 0; p < d.patches.size(); ++p) {
-    std::vector<int> loop;
-    BoundaryLoop region;
+    std::vector<NodeId> loop;
+    std::vector<int> corners;
     for (const PatchSide& side : d.patches[p].sides) {
       const std::vector<int> nodes = side_nodes(domain, d, side, cut_nodes);
-      region.corners.push_back(static_cast<int>(loop.size()));
+      corners.push_back(static_cast<int>(loop.size()));
       loop.insert(loop.end(), nodes.begin(), nodes.end() - 1);
     }
-    for (int id : loop) region.points.push_back(mesh.nodes[id]);
-    QuadMesh patch;
+    std::string tree;
     try {
-      patch = mesh_boundary(region, options);
+      tree = append_patch(mesh, loop, corners, options);
     } catch (const InputError& e) {
       throw InputError("patch " + std::to_string(p) + " of the decomposition: " + e.what());
-    }
-    const int base = static_cast<int>(mesh.nodes.size()), n = static_cast<int>(loop.size());
-    mesh.nodes.insert(mesh.nodes.end(), patch.nodes.begin() + n, patch.nodes.end());
-    for (Quad q : patch.quads) {
-      for (NodeId& v : q) v = v < n ? loop[v] : base + (v - n);
-      mesh.quads.push_back(q);
     }
     if (static_cast<long long>(mesh.quads.size()) > options.max_quads) {
       throw InputError("the mesh would have more than " + std::to_string(options.max_quads) + " quads");
     }
-    trees += (trees.empty() ? "" : ",") + patch.template_tree;
+    trees += (trees.empty() ? "" : ",") + tree;
   }
   // Templates repaired each patch with its cut nodes fixed. Corners still inverted or
   // at a straight angle get a repair of the whole face (untangle.h) that may move cut

@@ -78,6 +78,33 @@ Vec3 polar_to_uv(const PolarMap& m, const Vec3& xy) {
 
 namespace {
 
+// The polar map of a face periodic in u (period) around its pole at v = pole_v that
+// holds the loop points `uv`: u_ref their least u, radius their greatest |v - pole_v|,
+// side that of the farthest. The angle stays a full turn.
+PolarMap polar_map_around(const std::vector<Vec3>& uv, double pole_v, double period) {
+  PolarMap m;
+  m.period = period;
+  m.pole_v = pole_v;
+  m.u_ref = uv[0].x;
+  m.radius = 0;
+  for (const Vec3& p : uv) {
+    m.u_ref = std::min(m.u_ref, p.x);
+    if (std::abs(p.y - pole_v) > m.radius) {
+      m.radius = std::abs(p.y - pole_v);
+      m.side = p.y > pole_v ? 1.0 : -1.0;
+    }
+  }
+  return m;
+}
+
+// The polar (x, y) of a (u, v): the inverse of polar_to_uv.
+Vec3 uv_to_polar(const PolarMap& m, const Vec3& uv) {
+  const double theta = m.angle < 2 * M_PI ? m.angle * ((uv.x - m.u_ref) / m.period - 0.5)
+                                          : 2 * M_PI * (uv.x - m.u_ref) / m.period;
+  const double r = std::abs(uv.y - m.pole_v) / m.radius;
+  return {r * std::cos(theta), -m.side * r * std::sin(theta), 0.0};
+}
+
 // How far the surface turns around its pole at v = pole_v: the length of the circle
 // v = pole_v + side * delta over its mean distance from the pole, for delta a
 // thousandth of the face's extent in v (64 chords: 4e-4 short of the limit).
@@ -125,15 +152,7 @@ std::optional<PoleSector> pole_sector(const FaceBoundary& b, const TopoDS_Face& 
   const BRepAdaptor_Surface surface(face);
   if (!surface.IsUPeriodic()) return std::nullopt;
   const int n = static_cast<int>(b.nodes.size());
-  PolarMap m;
-  m.period = surface.UPeriod();
-  m.pole_v = b.pole_v;
-  m.u_ref = b.uv[0].x;
-  m.radius = 0;
-  for (const Vec3& p : b.uv) {
-    m.u_ref = std::min(m.u_ref, p.x);
-    m.radius = std::max(m.radius, std::abs(p.y - m.pole_v));
-  }
+  PolarMap m = polar_map_around(b.uv, b.pole_v, surface.UPeriod());
   if (!(m.radius > 0)) return std::nullopt;
   // The apex: the one loop node on the pole (within a millionth of the face's
   // extent in v: pcurves of other systems' files end there only to their tolerance).
@@ -142,7 +161,6 @@ std::optional<PoleSector> pole_sector(const FaceBoundary& b, const TopoDS_Face& 
     if (std::abs(b.uv[i].y - m.pole_v) <= 1e-6 * m.radius) apex.push_back(i);
   }
   if (apex.size() != 1) return std::nullopt;
-  m.side = b.uv[(apex[0] + n / 2) % n].y > m.pole_v ? 1.0 : -1.0;
   m.angle = angle_around_pole(surface, m);
   if (!(m.angle > 0) || m.angle >= kSectorAngleBelow) return std::nullopt;
   // The seam's ends at the rim: where the loop passes between a seam edge and
@@ -170,11 +188,7 @@ std::optional<PoleSector> pole_sector(const FaceBoundary& b, const TopoDS_Face& 
   FaceBoundary& out = sector.boundary;
   out = b;
   out.uv.clear();
-  for (const Vec3& p : b.uv) {
-    const double theta = m.angle * ((p.x - m.u_ref) / m.period - 0.5);
-    const double r = std::abs(p.y - m.pole_v) / m.radius;
-    out.uv.push_back({r * std::cos(theta), -m.side * r * std::sin(theta), 0.0});
-  }
+  for (const Vec3& p : b.uv) out.uv.push_back(uv_to_polar(m, p));
   out.polar = m;
   return sector;
 }
@@ -207,19 +221,8 @@ FaceBoundary around_pole(const FaceBoundary& b, const TopoDS_Face& face, int fac
   if (out.nodes.size() < 2) {
     throw InputError("face " + std::to_string(face_index) + " has no edge besides its seam and pole");
   }
-  PolarMap m;
-  m.period = surface.UPeriod();
-  m.pole_v = b.pole_v;
-  m.u_ref = uv[0].x;
-  for (const Vec3& p : uv) m.u_ref = std::min(m.u_ref, p.x);
-  m.side = uv[0].y > m.pole_v ? 1.0 : -1.0;
-  m.radius = 0;
-  for (const Vec3& p : uv) m.radius = std::max(m.radius, std::abs(p.y - m.pole_v));
-  for (const Vec3& p : uv) {
-    const double theta = 2 * M_PI * (p.x - m.u_ref) / m.period;
-    const double r = std::abs(p.y - m.pole_v) / m.radius;
-    out.uv.push_back({r * std::cos(theta), -m.side * r * std::sin(theta), 0.0});
-  }
+  const PolarMap m = polar_map_around(uv, b.pole_v, surface.UPeriod());
+  for (const Vec3& p : uv) out.uv.push_back(uv_to_polar(m, p));
   out.polar = m;
   out.arc_length = loop_arc_lengths(out.nodes, nodes);  // for the corner choice
   return out;
