@@ -15,6 +15,8 @@ packages=(
   cmake ninja-build g++ pkg-config
   # core, io, cli, tests
   nlohmann-json3-dev libcli11-dev libgtest-dev
+  # core: least-squares fits (a curved loop's surface, fitted_surface.h)
+  libeigen3-dev
   # occ: OpenCASCADE 7.6 (Debian's CMake targets link libtbb, hence libtbb-dev)
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libtbb-dev

@@ -52,7 +52,7 @@ bool added_a_corner(const QuadMesh& mesh, const BoundaryLoop& loop) {
 
 TEST(MeshProperties, GeneratedBoundariesGiveValidMeshes) {
   Tally convex, convex_new_corner, nonconvex, curved;
-  Tally convex_smoothed, nonconvex_smoothed;  // as the CLI and the Python module give them
+  Tally convex_smoothed, nonconvex_smoothed, curved_smoothed;  // as the CLI and the Python module give them
   for (int i = 0; i < kCases; ++i) {
     const testing::GeneratedCase c = testing::generated_case(i);
     const int n = static_cast<int>(c.loop.points.size());
@@ -83,19 +83,21 @@ TEST(MeshProperties, GeneratedBoundariesGiveValidMeshes) {
     } else {
       curved.update(q, where);
     }
-    if (c.planar) {
-      // Smoothing (with its untangling) keeps the boundary and a valid mesh
-      // (smooth_planar_region checks it) and never folds a convex region's quad.
-      QuadMesh smoothed = mesh;
-      ASSERT_NO_THROW(smooth_planar_region(smoothed, n, normal)) << where;
-      for (int p = 0; p < n; ++p) ASSERT_TRUE(smoothed.nodes[p] == c.loop.points[p]) << where;
-      const QualitySummary after = summarize_quality(smoothed, normal);
-      if (c.convex_planar) {
-        ASSERT_EQ(after.inverted, 0) << where << " after smoothing";
-        convex_smoothed.update(after, where);
-      } else {
-        nonconvex_smoothed.update(after, where);
-      }
+    // Smoothing (with its untangling) keeps the boundary and a valid mesh
+    // (smooth_region checks it) and never folds a convex region's quad; a curved
+    // loop is smoothed on its spanning surface.
+    QuadMesh smoothed = mesh;
+    ASSERT_NO_THROW(smooth_region(smoothed, n, planar ? std::optional<Vec3>(normal) : std::nullopt)) << where;
+    for (int p = 0; p < n; ++p) ASSERT_TRUE(smoothed.nodes[p] == c.loop.points[p]) << where;
+    const QualitySummary after =
+        summarize_quality(smoothed, planar ? std::optional<Vec3>(normal) : std::nullopt);
+    if (c.convex_planar) {
+      ASSERT_EQ(after.inverted, 0) << where << " after smoothing";
+      convex_smoothed.update(after, where);
+    } else if (c.planar) {
+      nonconvex_smoothed.update(after, where);
+    } else {
+      curved_smoothed.update(after, where);
     }
   }
   convex.print("convex planar:");
@@ -104,6 +106,7 @@ TEST(MeshProperties, GeneratedBoundariesGiveValidMeshes) {
   curved.print("curved 3D (quads' own normals):");
   convex_smoothed.print("convex planar, smoothed:");
   nonconvex_smoothed.print("mildly non-convex planar, smoothed:");
+  curved_smoothed.print("curved 3D, smoothed:");
 }
 
 TEST(MeshProperties, EveryCornerSetOfSmallLoopsMeshesOrIsRefused) {
@@ -160,7 +163,7 @@ TEST(MeshProperties, BestCornersAreNeverWorseThanTheGivenOnes) {
     for (int p = 0; p < n; ++p) ASSERT_TRUE(found.mesh.nodes[p] == c.loop.points[p]) << c.description;
     ASSERT_EQ(found.mesh.nodes.size(), 1 + found.mesh.quads.size() + n / 2) << c.description;
     QuadMesh given = mesh_boundary(c.loop);
-    smooth_planar_region(given, n, normal);
+    smooth_region(given, n, normal);
     const QualitySummary q_given = summarize_quality(given, normal);
     const QualitySummary q_found = summarize_quality(found.mesh, normal);
     ASSERT_LE(q_found.inverted, q_given.inverted) << c.description;
@@ -195,7 +198,7 @@ TEST(MeshProperties, LopsidedLensesHaveNoInvertedQuad) {
         const std::string what = "lens " + std::to_string(a) + "/" + std::to_string(b) + " sagittas " +
                                  std::to_string(first) + ", " + std::to_string(second);
         QuadMesh mesh = mesh_boundary(loop, {});
-        smooth_planar_region(mesh, static_cast<int>(loop.points.size()), up);
+        smooth_region(mesh, static_cast<int>(loop.points.size()), up);
         for (std::size_t i = 0; i < loop.points.size(); ++i) ASSERT_TRUE(mesh.nodes[i] == loop.points[i]) << what;
         const QualitySummary q = summarize_quality(mesh, up);
         EXPECT_EQ(q.inverted, 0) << what;

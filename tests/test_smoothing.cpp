@@ -160,7 +160,7 @@ TEST(ReflexCorners, AQuadAloneAtAReflexPointIsSplitInFiveAndSmoothedValid) {
   mesh.quads = {{0, 1, 2, 3}};
   EXPECT_EQ(summarize_quality(mesh, kUp).inverted, 1);
   const std::vector<Vec3> boundary = mesh.nodes;
-  ASSERT_NO_THROW(smooth_planar_region(mesh, 4, kUp));
+  ASSERT_NO_THROW(smooth_region(mesh, 4, kUp));
   EXPECT_EQ(mesh.quads.size(), 5u);
   EXPECT_EQ(mesh.nodes.size(), 1 + mesh.quads.size() + 4 / 2);
   EXPECT_EQ(check_disk_mesh(mesh, 4), "");

@@ -104,7 +104,8 @@ int run_cli(int argc, char** argv) {
       ->check(CLI::Range(tquad::kMinReadSeconds, tquad::kMaxReadSeconds));
   mesh->add_flag("!--no-smooth", command.shape.smooth,
                  "Keep the template nodes where they are: no smoothing of CAD faces on their\n"
-                 "surfaces, nor of a planar boundary region in its plane");
+                 "surfaces, nor of a boundary region in its plane or on the surface its mesh\n"
+                 "spans (a curved loop)");
   mesh->add_flag("--allow-inverted", command.shape.allow_inverted,
                  "CAD input: keep a face whose mesh still has inverted quads after repair\n"
                  "(reported) instead of refusing it");

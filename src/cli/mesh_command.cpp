@@ -158,7 +158,7 @@ ShapeMesh mesh_boundary_input(const MeshCommand& command, OutputFormat format, Q
   }
   const std::string problem = check_disk_mesh(mesh, boundary_points);
   if (!problem.empty()) throw std::logic_error("the mesh of " + command.input + " is invalid: " + problem);
-  if (command.shape.smooth && !best_corners) smooth_planar_region(mesh, boundary_points, reference);
+  if (command.shape.smooth && !best_corners) smooth_region(mesh, boundary_points, reference);
   if (format == OutputFormat::svg) {
     // The figure draws the template tree's cuts, which only the QuadMesh carries.
     SvgOptions svg;

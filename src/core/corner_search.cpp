@@ -114,11 +114,11 @@ CornerSearchResult mesh_boundary_best_corners(const BoundaryLoop& loop, const Me
     }
   }
   const bool replaced = best.corners != given;
-  if (smooth && plane_normal) {
-    smooth_planar_region(best.mesh, n, plane_normal);
+  if (smooth) {
+    smooth_region(best.mesh, n, plane_normal);
     best_score = score_of(best.mesh, plane_normal);
     if (replaced) {
-      smooth_planar_region(natural.mesh, n, plane_normal);
+      smooth_region(natural.mesh, n, plane_normal);
       natural_score = score_of(natural.mesh, plane_normal);
     } else {
       natural_score = best_score;

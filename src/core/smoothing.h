@@ -34,10 +34,11 @@
 
 namespace tquad {
 
-// Places a node at mesh coordinates `param`: its position and the surface's outer
-// normal there (any length). Returns false where the surface is singular (a pole),
-// where the node may not go.
-using PlaceNode = std::function<bool(const Vec3& param, Vec3& position, Vec3& normal)>;
+// Places node `node` at mesh coordinates `param`: its position and the surface's
+// outer normal there (any length). Returns false where the surface is singular (a
+// pole), where the node may not go. (The node is named for surfaces fitted per node,
+// fitted_surface.h; a CAD face's surface is the same for all.)
+using PlaceNode = std::function<bool(int node, const Vec3& param, Vec3& position, Vec3& normal)>;
 
 struct SmoothingOptions {
   int passes = 8;
@@ -74,11 +75,13 @@ SmoothingResult smooth_planar_mesh(QuadMesh& mesh, int fixed, int& merged, const
 SmoothingResult smooth_mesh_in_plane(QuadMesh& mesh, int fixed, const Vec3& normal, int& merged,
                                      const SmoothingOptions& options = {});
 
-// A boundary region's mesh (boundary_points first) smoothed in its plane when the
-// loop is planar (plane_normal set), a quad alone at a reflex boundary point first
-// split in five (reflex_corners.h), then checked again (check_disk_mesh; a failure
-// is std::logic_error, the mesher's fault). A curved 3D loop has no surface to keep
-// the nodes on: left as meshed. The CLI and the Python module both call this.
-void smooth_planar_region(QuadMesh& mesh, int boundary_points, const std::optional<Vec3>& plane_normal);
+// A boundary region's mesh (boundary_points first) smoothed: in its plane when the
+// loop is planar (plane_normal set), on the surface its templates' mesh spans
+// (fitted_surface.h) when it is a curved 3D loop, which has no surface of its own
+// (left as meshed if its projection on its mean plane crosses itself); a quad alone at a reflex
+// boundary point first split in five (reflex_corners.h); then checked again
+// (check_disk_mesh; a failure is std::logic_error, the mesher's fault). The CLI and
+// the Python module both call this.
+void smooth_region(QuadMesh& mesh, int boundary_points, const std::optional<Vec3>& plane_normal);
 
 }  // namespace tquad

@@ -26,7 +26,7 @@ void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<
   for (NodeId id : mesh.boundary_nodes) position.push_back(nodes[id]);
   position.insert(position.end(), mesh.interior.begin(), mesh.interior.end());
   for (const Vec3& p : mesh.param) normal.push_back(outer_normal(surface, reversed, to_uv(p)));
-  const PlaceNode place = [&](const Vec3& p, Vec3& at, Vec3& n) {
+  const PlaceNode place = [&](int, const Vec3& p, Vec3& at, Vec3& n) {
     const Vec3 uv = to_uv(p);
     n = outer_normal(surface, reversed, uv, at);
     return norm(n) > 0;

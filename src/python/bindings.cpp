@@ -147,7 +147,7 @@ py::dict mesh_boundary_binding(const py::array_t<double, py::array::c_style | py
     // The CLI's final check, the same for every front end.
     const std::string problem = check_disk_mesh(mesh, static_cast<int>(loop.points.size()));
     if (!problem.empty()) throw std::logic_error("the mesh is invalid: " + problem);
-    if (smooth && !best_corners) smooth_planar_region(mesh, static_cast<int>(loop.points.size()), plane);
+    if (smooth && !best_corners) smooth_region(mesh, static_cast<int>(loop.points.size()), plane);
     shape = single_face_mesh(std::move(mesh));
     shape.faces[0].corner_search = search;
     quality = measure_mesh_quality(shape, planar ? std::optional<Vec3>(normal) : std::nullopt);

@@ -98,9 +98,10 @@ def mesh_boundary(points, corners: Sequence[int], *, t4_ratio: int = 2,
         t4_ratio: the k of the T4 test k C <= A and k C <= B (at least 2).
         t5_cut_edges: edges on the cut of a two-curve region; 0 from the geometry.
         max_quads: refuse a mesh larger than this.
-        smooth: smooth a planar region's interior nodes in its plane (doublets
-            merged, no node's worst corner lowered); a curved 3D loop is left as
-            meshed. The boundary points are kept bit for bit either way.
+        smooth: smooth the interior nodes (doublets merged, no node's worst
+            corner lowered): a planar region's in its plane, a curved 3D loop's on
+            the surface its templates' mesh spans (fitted around each node). The
+            boundary points are kept bit for bit either way.
         best_corners: also try other corner sets (2, 3 or 4 curves, from the given
             corners and the points where the loop turns) and keep the best worst,
             then mean, scaled Jacobian; ``faces[0]["corner_search"]`` gives the

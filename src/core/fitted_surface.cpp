@@ -1,0 +1,84 @@
+#include "core/fitted_surface.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+#include "core/node_adjacency.h"
+
+namespace tquad {
+
+std::optional<FittedSurface> FittedSurface::over_loop(const std::vector<Vec3>& loop) {
+  const std::optional<MeanPlane> plane = MeanPlane::of_loop(loop);
+  if (!plane) return std::nullopt;
+  FittedSurface s;
+  s.plane_ = *plane;
+  s.first_interior_ = static_cast<int>(loop.size());
+  return s;
+}
+
+void FittedSurface::fit_nodes(const std::vector<Vec3>& nodes, const std::vector<Quad>& quads) {
+  const NodeAdjacency adjacency(nodes.size(), quads);
+  std::vector<Vec3> around;
+  fits_.clear();
+  for (std::size_t node = first_interior_; node < nodes.size(); ++node) {
+    around.clear();
+    for (int k = adjacency.quads_of.offsets[node]; k < adjacency.quads_of.offsets[node + 1]; ++k) {
+      for (NodeId other : quads[adjacency.quads_of.items[k]]) {
+        if (other != static_cast<NodeId>(node)) around.push_back(plane_.local(nodes[other]));
+      }
+    }
+    std::sort(around.begin(), around.end(),
+              [](const Vec3& a, const Vec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+    fits_.push_back(fit(plane_.local(nodes[node]), around));
+  }
+}
+
+FittedSurface::Quadric FittedSurface::fit(const Vec3& at, const std::vector<Vec3>& around) {
+  Quadric q;
+  q.at = at;
+  const int m = static_cast<int>(around.size());
+  if (m < 2) return q;
+  // Offsets scaled by the neighbourhood's size, so that the rank test below does not
+  // depend on the units.
+  double size = 0;
+  for (const Vec3& p : around) size = std::max(size, std::hypot(p.x - at.x, p.y - at.y));
+  if (!(size > 0)) return q;
+  Eigen::MatrixXd rows(m, 5);
+  Eigen::VectorXd heights(m);
+  for (int i = 0; i < m; ++i) {
+    const double x = (around[i].x - at.x) / size, y = (around[i].y - at.y) / size;
+    rows.row(i) << x, y, x * x, x * y, y * y;
+    heights(i) = around[i].z - at.z;
+  }
+  // A relative pivot of 1e-6: below it the nodes leave a direction undetermined.
+  for (const int unknowns : {5, 2}) {
+    if (m < unknowns) continue;
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(rows.leftCols(unknowns));
+    qr.setThreshold(1e-6);
+    if (qr.rank() < unknowns) continue;
+    const Eigen::VectorXd c = qr.solve(heights);
+    q.a = c(0) / size, q.b = c(1) / size;
+    if (unknowns == 5) q.c = c(2) / (size * size), q.d = c(3) / (size * size), q.e = c(4) / (size * size);
+    return q;
+  }
+  return q;
+}
+
+bool FittedSurface::place(int node, const Vec3& param, Vec3& position, Vec3& normal) const {
+  const int i = node - first_interior_;
+  if (i < 0 || i >= static_cast<int>(fits_.size())) return false;
+  const Quadric& q = fits_[i];
+  const double dx = param.x - q.at.x, dy = param.y - q.at.y;
+  const double height = q.at.z + q.a * dx + q.b * dy + q.c * dx * dx + q.d * dx * dy + q.e * dy * dy;
+  const double slope_x = q.a + 2 * q.c * dx + q.d * dy, slope_y = q.b + q.d * dx + 2 * q.e * dy;
+  if (!std::isfinite(height) || !std::isfinite(slope_x) || !std::isfinite(slope_y)) return false;
+  position = plane_.point_at(param.x, param.y, height);
+  // (e1 + slope_x n) x (e2 + slope_y n)
+  normal = plane_.normal - slope_x * plane_.e1 - slope_y * plane_.e2;
+  return true;
+}
+
+}  // namespace tquad
