@@ -7,7 +7,7 @@
 // degrees, the kBoundarySearchCandidates sharpest; every set of 2, 3 or 4 of them,
 // the kBoundarySearchSets whose corners turn closest to what their count asks (90
 // degrees for 4, 120 for 3, 180 for 2) first. Sets are compared before smoothing; the
-// best and the given set are then both smoothed (a planar loop) and the better kept,
+// best and the given set are then both smoothed (smooth_region) and the better kept,
 // so the result is never worse than the given corners'. Deterministic.
 #pragma once
 
@@ -44,8 +44,8 @@ struct CornerSearchResult {
 };
 
 // `plane_normal`: the loop's plane when planar (quality signed by it, the meshes
-// smoothed in it when `smooth`), else std::nullopt (each quad's own normal, no
-// smoothing). Throws InputError as mesh_boundary does when the given corners cannot
+// smoothed in it when `smooth`), else std::nullopt (each quad's own normal; the
+// meshes smoothed on the surface they span when `smooth`). Throws InputError as mesh_boundary does when the given corners cannot
 // be meshed.
 CornerSearchResult mesh_boundary_best_corners(const BoundaryLoop& loop, const MeshOptions& options,
                                               const std::optional<Vec3>& plane_normal, bool smooth);
