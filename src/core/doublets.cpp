@@ -30,7 +30,7 @@ double worst_corner(const Quad& q, const std::vector<Vec3>& position, const std:
 // One sweep over the nodes: merges where it may; marks removed quads and nodes.
 int merge_doublets(std::vector<Quad>& quads, int fixed, const std::vector<Vec3>& position,
                    const std::vector<Vec3>& normal, bool even_if_worse, std::vector<char>& quad_gone,
-                   std::vector<char>& node_gone) {
+                   std::vector<char>& node_gone, int& refused) {
   const NodeAdjacency adjacency(position.size(), quads);
   const CompressedLists& around = adjacency.quads_of;
   // Nodes of quads changed in this sweep: their lists above are stale until the next.
@@ -48,6 +48,7 @@ int merge_doublets(std::vector<Quad>& quads, int fixed, const std::vector<Vec3>&
     const Quad joined{a[1], a[2], a[3], b[2]};
     if (!even_if_worse && worst_corner(joined, position, normal) <
                               std::min(worst_corner(a, position, normal), worst_corner(b, position, normal))) {
+      ++refused;
       continue;
     }
     quads[live[0]] = joined;
@@ -63,15 +64,19 @@ int merge_doublets(std::vector<Quad>& quads, int fixed, const std::vector<Vec3>&
 }  // namespace
 
 int remove_doublets(std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param, std::vector<Vec3>& position,
-                    std::vector<Vec3>& normal, bool even_if_worse) {
+                    std::vector<Vec3>& normal, bool even_if_worse, int* refused) {
   std::vector<char> quad_gone(quads.size(), 0), node_gone(position.size(), 0);
-  int removed = 0;
+  int removed = 0, refusals = 0, merged = 0;
   // A merge can leave a neighbour in two quads; a few sweeps reach them.
   for (int sweep = 0; sweep < 4; ++sweep) {
-    const int merged = merge_doublets(quads, fixed, position, normal, even_if_worse, quad_gone, node_gone);
+    refusals = 0;  // those of the last sweep: earlier ones may have merged since
+    merged = merge_doublets(quads, fixed, position, normal, even_if_worse, quad_gone, node_gone, refusals);
     removed += merged;
     if (merged == 0) break;
   }
+  // Sweeps that ran out while still merging skipped the nodes of their merges: at
+  // least one refusal is then assumed.
+  if (refused) *refused = merged > 0 ? std::max(refusals, 1) : refusals;
   if (removed == 0) return 0;
   std::vector<NodeId> renumber(position.size(), -1);
   NodeId next = 0;

@@ -18,8 +18,9 @@ namespace tquad {
 
 // Nodes [0, fixed) stay. param, position and normal are per node as in smooth_mesh
 // (smoothing.h); removed nodes are dropped from them and the quads renumbered (kept
-// nodes keep their order). Returns the number of nodes removed.
+// nodes keep their order). Returns the number of nodes removed; `refused` (if given)
+// receives the number of doublets left because merging them would be worse.
 int remove_doublets(std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param, std::vector<Vec3>& position,
-                    std::vector<Vec3>& normal, bool even_if_worse = false);
+                    std::vector<Vec3>& normal, bool even_if_worse = false, int* refused = nullptr);
 
 }  // namespace tquad

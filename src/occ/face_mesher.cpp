@@ -168,6 +168,18 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
                       FaceMeshResult& out) {
   const BRepAdaptor_Surface surface(face);
   const bool reversed = face.Orientation() == TopAbs_REVERSED;
+  std::vector<Vec3> normals(param.size());
+  for (std::size_t i = 0; i < param.size(); ++i) {
+    normals[i] = outer_normal(surface, reversed, polar ? polar_to_uv(*polar, param[i]) : param[i]);
+  }
+  check_on_surface(face, param, polar, xyz, std::move(normals), out);
+}
+
+void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
+                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
+                      std::vector<Vec3> normals, FaceMeshResult& out) {
+  const BRepAdaptor_Surface surface(face);
+  const bool reversed = face.Orientation() == TopAbs_REVERSED;
   const auto to_uv = [&](const Vec3& p) { return polar ? polar_to_uv(*polar, p) : p; };
   out.param = param;
   out.polar = polar;
@@ -175,8 +187,6 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
   // strongly curved face is judged where its corners are; where the surface is
   // singular at the node (a pole), the normal at the quad's centre stands in, and
   // where it is singular there too, the quad's own (the diagonals' cross product).
-  std::vector<Vec3> normals(param.size());
-  for (std::size_t i = 0; i < param.size(); ++i) normals[i] = outer_normal(surface, reversed, to_uv(param[i]));
   long long inverted = 0, collapsed = 0, off_surface = 0;
   double worst = 1.0;
   out.scaled_jacobian.clear();
@@ -220,6 +230,7 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
   out.collapsed = collapsed;
   out.off_surface = off_surface;
   out.worst_corner = worst;
+  out.normal = std::move(normals);
 }
 
 bool better_face_mesh(const FaceMeshResult& a, const FaceMeshResult& b) {

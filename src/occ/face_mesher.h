@@ -39,6 +39,9 @@ struct FaceMeshResult {
   // Each local node's mesh coordinates, as check_on_surface measured them: (u, v), or
   // polar (x, y) around `polar`'s pole.
   std::vector<Vec3> param;
+  // Each local node's outer normal there (outer_normal: zero where singular), as
+  // check_on_surface measured them.
+  std::vector<Vec3> normal;
   std::optional<PolarMap> polar;
   double template_seconds = 0;   // building the template mesh (core)
   double placement_seconds = 0;  // putting its interior nodes on the surface
@@ -76,6 +79,11 @@ constexpr double kOffSurfaceRatio = 0.25;
 void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
                       const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
                       FaceMeshResult& out);
+// The same with each node's outer normal known (outer_normal at its param), as the
+// smoother keeps them: no evaluation of the surface at the nodes again.
+void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
+                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
+                      std::vector<Vec3> normals, FaceMeshResult& out);
 
 // Whether mesh a beats mesh b of the same face: fewer inverted quads, then fewer
 // collapsed ones (triangles in effect), then a better worst corner.

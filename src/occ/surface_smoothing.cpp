@@ -8,6 +8,28 @@
 
 namespace tquad {
 
+namespace {
+
+// A copy of `mesh` without its per-quad and per-node arrays (quads, interior nodes,
+// and what check_on_surface measures), which the caller fills: copying them whole
+// took most of the smoothing's time on faces where few nodes move (Cone_1.brep).
+// The arrays are moved out for the copy and back, so `source` ends as it was.
+FaceMeshResult without_nodes_and_quads(FaceMeshResult& source) {
+  std::vector<Quad> quads = std::move(source.quads);
+  std::vector<Vec3> interior = std::move(source.interior), param = std::move(source.param),
+                    normal = std::move(source.normal);
+  std::vector<double> scaled_jacobian = std::move(source.scaled_jacobian);
+  FaceMeshResult copy = source;
+  source.quads = std::move(quads);
+  source.interior = std::move(interior);
+  source.param = std::move(param);
+  source.normal = std::move(normal);
+  source.scaled_jacobian = std::move(scaled_jacobian);
+  return copy;
+}
+
+}  // namespace
+
 void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<Vec3>& nodes, FaceMeshResult& mesh) {
   if ((mesh.used_projection && has_seam) || mesh.interior.empty()) return;
   // Every corner already at good_enough: smooth_mesh would move no node (it starts
@@ -21,11 +43,14 @@ void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<
   const bool reversed = face.Orientation() == TopAbs_REVERSED;
   const auto to_uv = [&](const Vec3& p) { return mesh.polar ? polar_to_uv(*mesh.polar, p) : p; };
 
-  std::vector<Vec3> position, normal;
+  std::vector<Vec3> position;
   position.reserve(mesh.param.size());
   for (NodeId id : mesh.boundary_nodes) position.push_back(nodes[id]);
   position.insert(position.end(), mesh.interior.begin(), mesh.interior.end());
-  for (const Vec3& p : mesh.param) normal.push_back(outer_normal(surface, reversed, to_uv(p)));
+  if (mesh.normal.size() != mesh.param.size()) {  // not those check_on_surface measured
+    mesh.normal.clear();
+    for (const Vec3& p : mesh.param) mesh.normal.push_back(outer_normal(surface, reversed, to_uv(p)));
+  }
   const PlaceNode place = [&](int, const Vec3& p, Vec3& at, Vec3& n) {
     const Vec3 uv = to_uv(p);
     n = outer_normal(surface, reversed, uv, at);
@@ -33,22 +58,25 @@ void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<
   };
   // Doublets merged where the merged quad is no worse; where some are not, also with
   // every doublet merged and its reflex corner left to the smoothing, the better kept.
-  const FaceMeshResult original = mesh;
-  int strict_merges = -1;
+  // `mesh` stays as it is until the end: each try starts from it.
+  std::optional<FaceMeshResult> best;
   for (bool even_if_worse : {false, true}) {
-    std::vector<Vec3> param = original.param, moved = position, normals = normal;
-    std::vector<Quad> quads = original.quads;
-    const int merged = remove_doublets(quads, static_cast<int>(fixed), param, moved, normals, even_if_worse);
-    if (even_if_worse && merged == strict_merges) break;  // no doublet was refused
-    if (!even_if_worse) strict_merges = merged;
+    std::vector<Vec3> param = mesh.param, moved = position, normals = mesh.normal;
+    std::vector<Quad> quads = mesh.quads;
+    int refused = 0;
+    const int merged =
+        remove_doublets(quads, static_cast<int>(fixed), param, moved, normals, even_if_worse, &refused);
     const long long moves = smooth_mesh(quads, static_cast<int>(fixed), param, moved, normals, place).moves;
-    if (merged == 0 && moves == 0) continue;
-    FaceMeshResult smoothed = original;
-    smoothed.quads = std::move(quads);
-    smoothed.interior.assign(moved.begin() + fixed, moved.end());
-    check_on_surface(face, param, original.polar, moved, smoothed);
-    if (!better_face_mesh(mesh, smoothed)) mesh = std::move(smoothed);
+    if (merged > 0 || moves > 0) {
+      FaceMeshResult smoothed = without_nodes_and_quads(mesh);
+      smoothed.quads = std::move(quads);
+      smoothed.interior.assign(moved.begin() + fixed, moved.end());
+      check_on_surface(face, param, mesh.polar, moved, std::move(normals), smoothed);
+      if (!better_face_mesh(best ? *best : mesh, smoothed)) best = std::move(smoothed);
+    }
+    if (refused == 0) break;  // every doublet merged: the second try would be the same
   }
+  if (best) mesh = std::move(*best);
 }
 
 }  // namespace tquad
