@@ -1,7 +1,7 @@
 // libFuzzer target: the boundary JSON reader and the template mesher, then what the
 // CLI and the Python module do next by default: a planar region smoothed in its plane
-// (reflex-point splits, untangling, smoothing), and for loops of at most 40 points
-// the --corners best search.
+// (reflex-point splits, untangling, smoothing), a curved loop on the surface it spans,
+// and for loops of at most 40 points the --corners best search.
 //
 // Any input must end in a mesh that passes the final check (check_disk_mesh: all
 // quads, conforming, nodes = 1 + quads + boundary_edges / 2) or in an InputError.
@@ -42,8 +42,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!tquad::check_disk_mesh(mesh, n).empty()) std::abort();
   tquad::Vec3 normal;
   const bool planar = tquad::planar_normal(loop.points, normal);
-  if (planar && mesh.quads.size() <= 20'000) {
-    tquad::smooth_planar_region(mesh, n, normal);  // throws std::logic_error on an invalid result: a bug
+  if (mesh.quads.size() <= 20'000) {
+    // In its plane, or a curved loop on the surface it spans; throws std::logic_error
+    // on an invalid result: a bug.
+    tquad::smooth_region(mesh, n, planar ? std::optional<tquad::Vec3>(normal) : std::nullopt);
   }
   if (n <= 40) {
     try {

@@ -10,6 +10,7 @@
 #include <random>
 
 #include "boundary_generators.h"
+#include "core/boundary_region.h"
 #include "core/corner_search.h"
 #include "core/input_error.h"
 #include "core/mesh_validation.h"
@@ -83,14 +84,15 @@ TEST(MeshProperties, GeneratedBoundariesGiveValidMeshes) {
     } else {
       curved.update(q, where);
     }
-    // Smoothing (with its untangling) keeps the boundary and a valid mesh
-    // (smooth_region checks it) and never folds a convex region's quad; a curved
-    // loop is smoothed on its spanning surface.
-    QuadMesh smoothed = mesh;
-    ASSERT_NO_THROW(smooth_region(smoothed, n, planar ? std::optional<Vec3>(normal) : std::nullopt)) << where;
+    // As the CLI and the Python module give it (boundary_region.h): smoothed (with
+    // its untangling; a curved loop on the surface it spans), with other corners
+    // where the given ones leave an inverted quad. The boundary is kept and the mesh
+    // valid (mesh_boundary_region checks it), and no convex region's quad is folded.
+    const std::optional<Vec3> plane = planar ? std::optional<Vec3>(normal) : std::nullopt;
+    QuadMesh smoothed;
+    ASSERT_NO_THROW(smoothed = mesh_boundary_region(c.loop, MeshOptions{}, plane, true, false).mesh) << where;
     for (int p = 0; p < n; ++p) ASSERT_TRUE(smoothed.nodes[p] == c.loop.points[p]) << where;
-    const QualitySummary after =
-        summarize_quality(smoothed, planar ? std::optional<Vec3>(normal) : std::nullopt);
+    const QualitySummary after = summarize_quality(smoothed, plane);
     if (c.convex_planar) {
       ASSERT_EQ(after.inverted, 0) << where << " after smoothing";
       convex_smoothed.update(after, where);
@@ -104,9 +106,32 @@ TEST(MeshProperties, GeneratedBoundariesGiveValidMeshes) {
   convex_new_corner.print("convex planar, corner added on side:");
   nonconvex.print("mildly non-convex planar:");
   curved.print("curved 3D (quads' own normals):");
-  convex_smoothed.print("convex planar, smoothed:");
-  nonconvex_smoothed.print("mildly non-convex planar, smoothed:");
-  curved_smoothed.print("curved 3D, smoothed:");
+  convex_smoothed.print("convex planar, as the CLI gives it:");
+  nonconvex_smoothed.print("mildly non-convex, as the CLI gives it:");
+  curved_smoothed.print("curved 3D, as the CLI gives it:");
+}
+
+TEST(MeshProperties, GivenCornersThatLeaveAnInvertedQuadGiveWayToSearchedOnes) {
+  // Generated case 6535 (mildly non-convex, counts 6, 34, 2) keeps inverted quads
+  // smoothed with its given corners; the boundary route then searches corners and
+  // keeps a mesh without any, saying so. A case without inverted quads is left alone.
+  const testing::GeneratedCase folded = testing::generated_case(6535);
+  Vec3 normal;
+  ASSERT_TRUE(planar_normal(folded.loop.points, normal));
+  QuadMesh given = mesh_boundary(folded.loop);
+  smooth_region(given, static_cast<int>(folded.loop.points.size()), normal);
+  ASSERT_GT(summarize_quality(given, normal).inverted, 0);
+  const BoundaryRegionMesh region = mesh_boundary_region(folded.loop, MeshOptions{}, normal, true, false);
+  EXPECT_EQ(summarize_quality(region.mesh, normal).inverted, 0);
+  ASSERT_TRUE(region.corner_search);
+  EXPECT_TRUE(region.corner_search->after_inverted);
+  EXPECT_TRUE(region.corner_search->changed);
+  EXPECT_LT(region.corner_search->natural_worst, 0);
+  EXPECT_GT(region.corner_search->chosen_worst, 0);
+
+  const testing::GeneratedCase fine = testing::generated_case(0);
+  ASSERT_TRUE(planar_normal(fine.loop.points, normal));
+  EXPECT_FALSE(mesh_boundary_region(fine.loop, MeshOptions{}, normal, true, false).corner_search);
 }
 
 TEST(MeshProperties, EveryCornerSetOfSmallLoopsMeshesOrIsRefused) {

@@ -15,7 +15,7 @@
 #include <utility>
 
 #include "core/input_error.h"
-#include "core/corner_search.h"
+#include "core/boundary_region.h"
 #include "core/mesh_validation.h"
 #include "core/planar_self_intersection.h"
 #include "core/quality.h"
@@ -110,6 +110,11 @@ void print_summary(std::ostream& out, const MeshCommand& command, const ShapeMes
   }
   if (mesh.faces.size() == 1 && mesh.refused_faces.empty()) {
     out << "  template tree " << mesh.faces[0].template_tree << "\n";
+    const std::optional<CornerSearch>& search = mesh.faces[0].corner_search;
+    if (search && search->after_inverted) {
+      out << "  the given corners left an inverted quad (scaled Jacobian " << fixed(search->natural_worst, 3)
+          << "): meshed with other corners (" << fixed(search->chosen_worst, 3) << ")\n";
+    }
   } else {
     out << "  faces " << mesh.faces.size() << " meshed, " << mesh.refused_faces.size() << " refused\n";
     for (const FaceMesh& f : mesh.faces) {
@@ -142,23 +147,14 @@ ShapeMesh mesh_boundary_input(const MeshCommand& command, OutputFormat format, Q
   Vec3 normal;
   const std::optional<Vec3> reference =
       planar_normal(loop.points, normal) ? std::optional<Vec3>(normal) : std::nullopt;
-  QuadMesh mesh;
-  std::optional<CornerSearch> search;
+  BoundaryRegionMesh region;
   try {
-    if (best_corners) {
-      CornerSearchResult found = mesh_boundary_best_corners(loop, command.options, reference, command.shape.smooth);
-      mesh = std::move(found.mesh);
-      search = found.search;
-    } else {
-      mesh = mesh_boundary(loop, command.options);
-    }
+    region = mesh_boundary_region(loop, command.options, reference, command.shape.smooth, best_corners);
   } catch (const InputError& e) {
     // Core messages name the point / segment / curve; add the file.
     throw InputError(command.input + ": " + e.what());
   }
-  const std::string problem = check_disk_mesh(mesh, boundary_points);
-  if (!problem.empty()) throw std::logic_error("the mesh of " + command.input + " is invalid: " + problem);
-  if (command.shape.smooth && !best_corners) smooth_region(mesh, boundary_points, reference);
+  QuadMesh& mesh = region.mesh;
   if (format == OutputFormat::svg) {
     // The figure draws the template tree's cuts, which only the QuadMesh carries.
     SvgOptions svg;
@@ -173,7 +169,7 @@ ShapeMesh mesh_boundary_input(const MeshCommand& command, OutputFormat format, Q
   }
   // The file writers and the report take a shape's mesh: a boundary input is face 0.
   ShapeMesh shape = single_face_mesh(std::move(mesh));
-  shape.faces[0].corner_search = search;
+  shape.faces[0].corner_search = region.corner_search;
   quality = measure_mesh_quality(shape, reference);
   return shape;
 }

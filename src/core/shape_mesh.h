@@ -17,6 +17,8 @@ namespace tquad {
 struct CornerSearch {
   int tried = 0;
   bool changed = false;  // a searched set beat the natural choice
+  // Not asked for: the given corners left an inverted quad (boundary_region.h).
+  bool after_inverted = false;
   double natural_worst = 0, natural_mean = 0, chosen_worst = 0, chosen_mean = 0;
 };
 
@@ -25,7 +27,7 @@ struct FaceMesh {
   std::string template_tree;  // e.g. "T2[T0,T0,T1[T0,T0,T0,T0]]"
   std::int64_t first_quad = 0;
   std::int64_t quad_count = 0;
-  std::optional<CornerSearch> corner_search;  // set by --corners best
+  std::optional<CornerSearch> corner_search;  // set by --corners best, or after an inverted quad
 };
 
 struct RefusedFace {

@@ -80,8 +80,8 @@ SmoothingResult smooth_mesh_in_plane(QuadMesh& mesh, int fixed, const Vec3& norm
 // (fitted_surface.h) when it is a curved 3D loop, which has no surface of its own
 // (left as meshed if its projection on its mean plane crosses itself); a quad alone at a reflex
 // boundary point first split in five (reflex_corners.h); then checked again
-// (check_disk_mesh; a failure is std::logic_error, the mesher's fault). The CLI and
-// the Python module both call this.
+// (check_disk_mesh; a failure is std::logic_error, the mesher's fault). The boundary
+// route of the CLI and the Python module (boundary_region.h) calls this.
 void smooth_region(QuadMesh& mesh, int boundary_points, const std::optional<Vec3>& plane_normal);
 
 }  // namespace tquad

@@ -36,6 +36,8 @@ nlohmann::ordered_json mesh_report_json(const ShapeMesh& mesh, const QualitySumm
       const CornerSearch& c = *f.corner_search;
       nlohmann::ordered_json search;
       search["tried"] = c.tried;
+      // "asked" (--corners best), or "inverted": the given corners left an inverted quad.
+      search["reason"] = c.after_inverted ? "inverted" : "asked";
       search["changed"] = c.changed;
       search["natural"] = {{"min", c.natural_worst}, {"mean", c.natural_mean}};
       search["chosen"] = {{"min", c.chosen_worst}, {"mean", c.chosen_mean}};

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/corner_search.h"
+#include "core/boundary_region.h"
 #include "core/input_error.h"
 #include "core/mesher.h"
 #include "core/mesh_validation.h"
@@ -81,6 +81,7 @@ py::dict mesh_dict(const ShapeMesh& mesh, const QualitySummary& quality) {
       const CornerSearch& c = *f.corner_search;
       py::dict search;
       search["tried"] = c.tried;
+      search["reason"] = c.after_inverted ? "inverted" : "asked";
       search["changed"] = c.changed;
       search["natural_min"] = c.natural_worst;
       search["natural_mean"] = c.natural_mean;
@@ -135,21 +136,10 @@ py::dict mesh_boundary_binding(const py::array_t<double, py::array::c_style | py
     const bool planar = planar_normal(loop.points, normal);
     const std::optional<Vec3> plane = planar ? std::optional<Vec3>(normal) : std::nullopt;
     const MeshOptions options = template_options(t4_ratio, t5_cut_edges, max_quads);
-    QuadMesh mesh;
-    std::optional<CornerSearch> search;
-    if (best_corners) {
-      CornerSearchResult found = mesh_boundary_best_corners(loop, options, plane, smooth);
-      mesh = std::move(found.mesh);
-      search = found.search;
-    } else {
-      mesh = mesh_boundary(loop, options);
-    }
-    // The CLI's final check, the same for every front end.
-    const std::string problem = check_disk_mesh(mesh, static_cast<int>(loop.points.size()));
-    if (!problem.empty()) throw std::logic_error("the mesh is invalid: " + problem);
-    if (smooth && !best_corners) smooth_region(mesh, static_cast<int>(loop.points.size()), plane);
-    shape = single_face_mesh(std::move(mesh));
-    shape.faces[0].corner_search = search;
+    // The same route and final check as the CLI's.
+    BoundaryRegionMesh region = mesh_boundary_region(loop, options, plane, smooth, best_corners);
+    shape = single_face_mesh(std::move(region.mesh));
+    shape.faces[0].corner_search = region.corner_search;
     quality = measure_mesh_quality(shape, planar ? std::optional<Vec3>(normal) : std::nullopt);
   }
   py::dict out = mesh_dict(shape, quality);

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "boundary_generators.h"
 #include "cli_test_support.h"
 
 namespace tquad::cli_test {
@@ -240,6 +241,22 @@ TEST_F(Success, CurvedPatchUsesPerQuadNormals) {
   const json report = json::parse(r.out);
   EXPECT_EQ(report["quality"]["inverted"], 0);
   EXPECT_GT(report["quality"]["scaled_jacobian"]["min"].get<double>(), 0.0);
+}
+
+TEST_F(Success, GivenCornersThatLeaveAnInvertedQuadGiveWayAndTheReportSaysSo) {
+  // Generated case 6535 (counts 6, 34, 2, one side bent in): its given corners keep
+  // inverted quads after smoothing; the command meshes it with searched corners.
+  const testing::GeneratedCase c = testing::generated_case(6535);
+  const std::string input = boundary_file("folded.json", c.loop.points, c.loop.corners);
+  const RunResult r = run_tquad({"mesh", input, "-o", path("folded.vtu"), "--report", "json"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json report = json::parse(r.out);
+  EXPECT_EQ(report["quality"]["inverted"], 0);
+  EXPECT_EQ(report["faces"][0]["corner_search"]["reason"], "inverted");
+  EXPECT_LT(report["faces"][0]["corner_search"]["natural"]["min"].get<double>(), 0.0);
+  const RunResult text = run_tquad({"mesh", input, "-o", path("folded.vtu")});
+  ASSERT_EQ(text.exit_status, 0) << text.err;
+  EXPECT_NE(text.out.find("the given corners left an inverted quad"), std::string::npos) << text.out;
 }
 
 TEST_F(Success, ShippedExampleBoundariesMesh) {

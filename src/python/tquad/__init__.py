@@ -106,6 +106,9 @@ def mesh_boundary(points, corners: Sequence[int], *, t4_ratio: int = 2,
             corners and the points where the loop turns) and keep the best worst,
             then mean, scaled Jacobian; ``faces[0]["corner_search"]`` gives the
             given corners' figures beside the chosen ones (the CLI's --corners best).
+            Without it, the search runs anyway where the given corners leave an
+            inverted quad, and its mesh is kept if it has fewer
+            (``corner_search["reason"]`` is then ``"inverted"``).
 
     Raises:
         ValueError: the boundary cannot be meshed (the message says why and where).
