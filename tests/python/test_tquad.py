@@ -207,6 +207,23 @@ class BoundarySmoothingTest(unittest.TestCase):
         print(f"[ quality  ] plate_t2: scaled Jacobian min {raw.quality['scaled_jacobian']['min']:.3f} "
               f"-> {smoothed.quality['scaled_jacobian']['min']:.3f} smoothed")
 
+    def test_a_curved_loop_is_smoothed_on_the_surface_its_mesh_spans(self):
+        import json
+        with open(os.path.join(REPO, "resources", "boundaries", "sphere_octant_t3.json")) as f:
+            data = json.load(f)
+        points = np.array(data["points"], dtype=float)
+        raw = tquad.mesh_boundary(points, data["corners"], smooth=False)
+        smoothed = tquad.mesh_boundary(points, data["corners"])
+        n = len(points)
+        np.testing.assert_array_equal(smoothed.nodes[:n], points)
+        self.assertGreater(smoothed.quality["scaled_jacobian"]["min"], raw.quality["scaled_jacobian"]["min"] + 0.2)
+        # On the templates' surface: no node farther from the unit sphere than the
+        # templates put the farthest (their surface sags inside the sphere).
+        sag = np.abs(np.linalg.norm(raw.nodes, axis=1) - 1).max()
+        self.assertLessEqual(np.abs(np.linalg.norm(smoothed.nodes, axis=1) - 1).max(), sag * 1.01)
+        print(f"[ quality  ] sphere octant: scaled Jacobian min {raw.quality['scaled_jacobian']['min']:.3f} "
+              f"-> {smoothed.quality['scaled_jacobian']['min']:.3f} smoothed, sag {sag:.4f}")
+
     def test_a_tilted_plane_is_smoothed_in_that_plane(self):
         points, corners = self._plate()
         flat = np.column_stack([points[:, 0], points[:, 1], np.zeros(len(points))]) if points.shape[1] == 2 else points
