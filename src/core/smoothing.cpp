@@ -603,6 +603,7 @@ void smooth_curved_region(QuadMesh& mesh, int fixed) {
   keep_if_better(smoothed);
   if (best.inverted == 0) return;
   const std::optional<MeanValueSurface> membrane = MeanValueSurface::over_loop(loop);
+  if (!membrane) return;
   const auto nothing = [](const std::vector<Vec3>&, const std::vector<Quad>&) {};
   const auto on_membrane = [&](int, const Vec3& p, Vec3& at, Vec3& normal) { return membrane->place(p, at, normal); };
   smoothed = smoothed_in_mean_plane(meshed, fixed, membrane->plane(), true, nothing, on_membrane);
