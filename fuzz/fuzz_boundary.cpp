@@ -1,7 +1,8 @@
-// libFuzzer target: the boundary JSON reader and the template mesher, then what the
-// CLI and the Python module do next by default: a planar region smoothed in its plane
-// (reflex-point splits, untangling, smoothing), a curved loop on the surface it spans,
-// and for loops of at most 40 points the --corners best search.
+// libFuzzer target: the boundary JSON reader and the template mesher, then the route
+// the CLI and the Python module take by default (mesh_boundary_region: a planar
+// region smoothed in its plane with reflex-point splits and untangling, a curved loop
+// on the surface it spans, the corner search where an inverted quad stays), and for
+// loops of at most 40 points the --corners best search.
 //
 // Any input must end in a mesh that passes the final check (check_disk_mesh: all
 // quads, conforming, nodes = 1 + quads + boundary_edges / 2) or in an InputError.
@@ -14,6 +15,7 @@
 #include <optional>
 #include <string>
 
+#include "core/boundary_region.h"
 #include "core/corner_search.h"
 #include "core/input_error.h"
 #include "core/mesh_validation.h"
@@ -42,15 +44,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!tquad::check_disk_mesh(mesh, n).empty()) std::abort();
   tquad::Vec3 normal;
   const bool planar = tquad::planar_normal(loop.points, normal);
+  const std::optional<tquad::Vec3> plane = planar ? std::optional<tquad::Vec3>(normal) : std::nullopt;
   if (mesh.quads.size() <= 20'000) {
-    // In its plane, or a curved loop on the surface it spans; throws std::logic_error
-    // on an invalid result: a bug.
-    tquad::smooth_region(mesh, n, planar ? std::optional<tquad::Vec3>(normal) : std::nullopt);
+    // The front ends' route (boundary_region.h): smoothed in its plane or, a curved
+    // loop, on the surface it spans, and the corner search where an inverted quad
+    // stays; it throws std::logic_error on an invalid result: a bug.
+    try {
+      tquad::mesh_boundary_region(loop, options, plane, true, false);
+    } catch (const tquad::InputError&) {
+      std::abort();  // the given corners meshed above, so the route must too
+    }
   }
   if (n <= 40) {
     try {
       const tquad::CornerSearchResult found = tquad::mesh_boundary_best_corners(
-          loop, options, planar ? std::optional<tquad::Vec3>(normal) : std::nullopt, true);
+          loop, options, plane, true);
       if (!tquad::check_disk_mesh(found.mesh, n).empty()) std::abort();
     } catch (const tquad::InputError&) {
       std::abort();  // the given corners meshed above, so the search must too

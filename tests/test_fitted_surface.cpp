@@ -8,6 +8,7 @@
 
 #include "boundary_generators.h"
 #include "core/fitted_surface.h"
+#include "core/mean_value_surface.h"
 #include "core/mesher.h"
 #include "core/quality.h"
 #include "core/smoothing.h"
@@ -47,17 +48,17 @@ double saddle(double x, double y) { return 0.3 * x * x - 0.2 * x * y - 0.1 * y *
 TEST(FittedSurface, ReproducesAQuadricAndKeepsEachNode) {
   const int cells = 8, boundary = 4 * cells;
   const QuadMesh mesh = grid_on(cells, saddle);
-  std::optional<FittedSurface> surface =
-      FittedSurface::over_loop({mesh.nodes.begin(), mesh.nodes.begin() + boundary});
-  ASSERT_TRUE(surface);
-  surface->fit_nodes(mesh.nodes, mesh.quads);
+  const std::optional<MeanPlane> plane = MeanPlane::of_loop({mesh.nodes.begin(), mesh.nodes.begin() + boundary});
+  ASSERT_TRUE(plane);
+  FittedSurface surface(*plane, boundary);
+  surface.fit_nodes(mesh.nodes, mesh.quads);
   for (int node = boundary; node < static_cast<int>(mesh.nodes.size()); ++node) {
-    const Vec3 local = surface->plane().local(mesh.nodes[node]), start{local.x, local.y, 0};
+    const Vec3 local = surface.plane().local(mesh.nodes[node]), start{local.x, local.y, 0};
     Vec3 position, normal;
-    ASSERT_TRUE(surface->place(node, start, position, normal));
+    ASSERT_TRUE(surface.place(node, start, position, normal));
     EXPECT_NEAR(distance(position, mesh.nodes[node]), 0, 1e-12);
     // Moved half an edge, still on the quadric, with its normal.
-    ASSERT_TRUE(surface->place(node, start + Vec3{0.1, -0.07, 0}, position, normal));
+    ASSERT_TRUE(surface.place(node, start + Vec3{0.1, -0.07, 0}, position, normal));
     EXPECT_NEAR(position.z, saddle(position.x, position.y), 1e-9);
     const Vec3 expected{-(0.6 * position.x - 0.2 * position.y), -(-0.2 * position.x - 0.2 * position.y), 1};
     EXPECT_NEAR(norm(cross(normal, expected)) / (norm(normal) * norm(expected)), 0, 1e-9);
@@ -65,14 +66,55 @@ TEST(FittedSurface, ReproducesAQuadricAndKeepsEachNode) {
   }
 }
 
-TEST(FittedSurface, NoneWhereTheLoopsProjectionCrossesItself) {
+TEST(FittedSurface, NoPlaneWhereTheLoopsProjectionCrossesItself) {
   // A trefoil knot: its projection on any plane crosses itself.
   std::vector<Vec3> knot;
   for (int i = 0; i < 90; ++i) {
     const double t = 2 * M_PI * i / 90;
     knot.push_back({std::sin(t) + 2 * std::sin(2 * t), std::cos(t) - 2 * std::cos(2 * t), -std::sin(3 * t)});
   }
-  EXPECT_FALSE(FittedSurface::over_loop(knot));
+  EXPECT_FALSE(MeanPlane::of_loop(knot));  // so no fitted surface either
+}
+
+// The membrane through a grid's boundary (grid_on) at its interior node `node`:
+// position and normal there, and the normal the position's finite differences give.
+struct MembraneAt {
+  Vec3 position, normal, expected_normal;
+};
+
+template <typename Height>
+MembraneAt membrane_of_grid(Height height, int node) {
+  const int cells = 8, boundary = 4 * cells;
+  const QuadMesh mesh = grid_on(cells, height);
+  const std::vector<Vec3> loop(mesh.nodes.begin(), mesh.nodes.begin() + boundary);
+  const std::optional<MeanPlane> plane = MeanPlane::of_loop(loop);
+  EXPECT_TRUE(plane);
+  const MeanValueSurface surface(*plane, loop);
+  Vec3 unused, on_loop{plane->local(loop[3]).x, plane->local(loop[3]).y, 0};
+  EXPECT_FALSE(surface.place(on_loop, unused, unused));  // on the loop: no normal
+  const Vec3 local = plane->local(mesh.nodes[boundary + node]), p{local.x, local.y, 0};
+  MembraneAt at;
+  EXPECT_TRUE(surface.place(p, at.position, at.normal));
+  const double h = 1e-6;
+  Vec3 along_x, along_y;
+  EXPECT_TRUE(surface.place(p + Vec3{h, 0, 0}, along_x, unused));
+  EXPECT_TRUE(surface.place(p + Vec3{0, h, 0}, along_y, unused));
+  at.expected_normal = cross((1 / h) * (along_x - at.position), (1 / h) * (along_y - at.position));
+  return at;
+}
+
+TEST(MeanValueSurface, ReproducesAPlaneAndHasTheNormalOfItsHeights) {
+  // Mean value interpolation reproduces linear heights (a plane) exactly.
+  const auto tilted = [](double x, double y) { return 0.3 * x - 0.2 * y + 1; };
+  const MembraneAt flat = membrane_of_grid(tilted, 10);
+  EXPECT_NEAR(flat.position.z, tilted(flat.position.x, flat.position.y), 1e-12);
+  EXPECT_NEAR(norm(cross(flat.normal, Vec3{-0.3, 0.2, 1})) / norm(flat.normal), 0, 1e-9);
+  // Round a saddle, its normal (analytic derivatives) is that of its heights.
+  for (int node : {0, 10, 24, 48}) {
+    const MembraneAt at = membrane_of_grid(saddle, node);
+    EXPECT_NEAR(norm(cross(at.normal, at.expected_normal)) / (norm(at.normal) * norm(at.expected_normal)), 0, 1e-5);
+    EXPECT_GT(dot(at.normal, at.expected_normal), 0);
+  }
 }
 
 // The largest distance of a mesh's interior nodes from the sphere of radius 1.

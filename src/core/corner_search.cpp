@@ -94,7 +94,8 @@ std::vector<std::vector<int>> ranked_corner_sets(std::vector<CornerCandidate> ca
 }
 
 CornerSearchResult mesh_boundary_best_corners(const BoundaryLoop& loop, const MeshOptions& options,
-                                              const std::optional<Vec3>& plane_normal, bool smooth) {
+                                              const std::optional<Vec3>& plane_normal, bool smooth,
+                                              const QuadMesh* given_smoothed) {
   const std::vector<int> given = validate_boundary(loop);
   const int n = static_cast<int>(loop.points.size());
   CornerSearchResult natural{mesh_boundary(loop, options), given, {}};
@@ -115,14 +116,23 @@ CornerSearchResult mesh_boundary_best_corners(const BoundaryLoop& loop, const Me
   }
   const bool replaced = best.corners != given;
   if (smooth) {
-    smooth_region(best.mesh, n, plane_normal);
-    best_score = score_of(best.mesh, plane_normal);
+    // The given corners' mesh smoothed, unless the caller has it already.
+    const auto smooth_given = [&](QuadMesh& mesh) {
+      if (given_smoothed) {
+        mesh = *given_smoothed;
+      } else {
+        smooth_region(mesh, n, plane_normal);
+      }
+    };
     if (replaced) {
-      smooth_region(natural.mesh, n, plane_normal);
+      smooth_region(best.mesh, n, plane_normal);
+      smooth_given(natural.mesh);
       natural_score = score_of(natural.mesh, plane_normal);
     } else {
-      natural_score = best_score;
+      smooth_given(best.mesh);
     }
+    best_score = score_of(best.mesh, plane_normal);
+    if (!replaced) natural_score = best_score;
   }
   CornerSearch search;
   search.tried = tried;

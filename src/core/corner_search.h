@@ -46,8 +46,11 @@ struct CornerSearchResult {
 // `plane_normal`: the loop's plane when planar (quality signed by it, the meshes
 // smoothed in it when `smooth`), else std::nullopt (each quad's own normal; the
 // meshes smoothed on the surface they span when `smooth`). Throws InputError as
-// mesh_boundary does when the given corners cannot be meshed.
+// mesh_boundary does when the given corners cannot be meshed. `given_smoothed`: the
+// given corners' mesh already smoothed by smooth_region (the boundary route has it),
+// taken instead of smoothing it again.
 CornerSearchResult mesh_boundary_best_corners(const BoundaryLoop& loop, const MeshOptions& options,
-                                              const std::optional<Vec3>& plane_normal, bool smooth);
+                                              const std::optional<Vec3>& plane_normal, bool smooth,
+                                              const QuadMesh* given_smoothed = nullptr);
 
 }  // namespace tquad

@@ -3,35 +3,27 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 
 #include "core/node_adjacency.h"
 
 namespace tquad {
 
-std::optional<FittedSurface> FittedSurface::over_loop(const std::vector<Vec3>& loop) {
-  const std::optional<MeanPlane> plane = MeanPlane::of_loop(loop);
-  if (!plane) return std::nullopt;
-  FittedSurface s;
-  s.plane_ = *plane;
-  s.first_interior_ = static_cast<int>(loop.size());
-  return s;
-}
-
 void FittedSurface::fit_nodes(const std::vector<Vec3>& nodes, const std::vector<Quad>& quads) {
   const NodeAdjacency adjacency(nodes.size(), quads);
+  std::vector<NodeId> others;
   std::vector<Vec3> around;
   fits_.clear();
   for (std::size_t node = first_interior_; node < nodes.size(); ++node) {
-    around.clear();
+    others.clear();
     for (int k = adjacency.quads_of.offsets[node]; k < adjacency.quads_of.offsets[node + 1]; ++k) {
       for (NodeId other : quads[adjacency.quads_of.items[k]]) {
-        if (other != static_cast<NodeId>(node)) around.push_back(plane_.local(nodes[other]));
+        if (other != static_cast<NodeId>(node)) others.push_back(other);
       }
     }
-    std::sort(around.begin(), around.end(),
-              [](const Vec3& a, const Vec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
-    around.erase(std::unique(around.begin(), around.end()), around.end());
+    std::sort(others.begin(), others.end());  // each node of the quads around once
+    others.erase(std::unique(others.begin(), others.end()), others.end());
+    around.clear();
+    for (NodeId other : others) around.push_back(plane_.local(nodes[other]));
     fits_.push_back(fit(plane_.local(nodes[node]), around));
   }
 }
@@ -76,8 +68,7 @@ bool FittedSurface::place(int node, const Vec3& param, Vec3& position, Vec3& nor
   const double slope_x = q.a + 2 * q.c * dx + q.d * dy, slope_y = q.b + q.d * dx + 2 * q.e * dy;
   if (!std::isfinite(height) || !std::isfinite(slope_x) || !std::isfinite(slope_y)) return false;
   position = plane_.point_at(param.x, param.y, height);
-  // (e1 + slope_x n) x (e2 + slope_y n)
-  normal = plane_.normal - slope_x * plane_.e1 - slope_y * plane_.e2;
+  normal = plane_.normal_of_slopes(slope_x, slope_y);
   return true;
 }
 

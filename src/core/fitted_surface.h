@@ -15,7 +15,6 @@
 // moves on its own fit, made once: the surface does not drift as nodes move.
 #pragma once
 
-#include <optional>
 #include <vector>
 
 #include "core/mean_plane.h"
@@ -25,9 +24,9 @@ namespace tquad {
 
 class FittedSurface {
  public:
-  // The mean plane of a loop; nullopt when the loop's projection on it crosses or
-  // touches itself (a mesh of the loop is then no height function over it).
-  static std::optional<FittedSurface> over_loop(const std::vector<Vec3>& loop_points);
+  // Heights over `plane` (MeanPlane::of_loop) of a mesh whose first `loop_points`
+  // nodes are its loop.
+  FittedSurface(const MeanPlane& plane, int loop_points) : plane_(plane), first_interior_(loop_points) {}
 
   // Fits the nodes [loop points, nodes) of a mesh whose first nodes are the loop's
   // points, each to the nodes of its quads.

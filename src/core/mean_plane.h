@@ -28,6 +28,9 @@ struct MeanPlane {
     return {dot(d, e1), dot(d, e2), dot(d, normal)};
   }
   Vec3 point_at(double x, double y, double height) const { return origin + x * e1 + y * e2 + height * normal; }
+  // The normal of a height function with these slopes along e1 and e2 (the cross
+  // product of (e1 + slope_x normal) and (e2 + slope_y normal)), not of unit length.
+  Vec3 normal_of_slopes(double slope_x, double slope_y) const { return normal - slope_x * e1 - slope_y * e2; }
 };
 
 }  // namespace tquad

@@ -6,18 +6,13 @@
 
 namespace tquad {
 
-std::optional<MeanValueSurface> MeanValueSurface::over_loop(const std::vector<Vec3>& loop_points) {
-  const std::optional<MeanPlane> plane = MeanPlane::of_loop(loop_points);
-  if (!plane) return std::nullopt;
-  MeanValueSurface s;
-  s.plane_ = *plane;
+MeanValueSurface::MeanValueSurface(const MeanPlane& plane, const std::vector<Vec3>& loop_points) : plane_(plane) {
   for (const Vec3& p : loop_points) {
-    const Vec3 local = plane->local(p);
-    s.xs_.push_back(local.x);
-    s.ys_.push_back(local.y);
-    s.heights_.push_back(local.z);
+    const Vec3 local = plane.local(p);
+    xs_.push_back(local.x);
+    ys_.push_back(local.y);
+    heights_.push_back(local.z);
   }
-  return s;
 }
 
 namespace {
@@ -95,8 +90,7 @@ bool MeanValueSurface::place(const Vec3& param, Vec3& position, Vec3& normal) co
   double h, hx, hy;
   if (!height(param.x, param.y, h, hx, hy)) return false;
   position = plane_.point_at(param.x, param.y, h);
-  // (e1 + hx n) x (e2 + hy n)
-  normal = plane_.normal - hx * plane_.e1 - hy * plane_.e2;
+  normal = plane_.normal_of_slopes(hx, hy);
   return true;
 }
 

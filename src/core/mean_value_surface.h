@@ -9,7 +9,6 @@
 // 0.76 instead of 0.90), so it is the fallback, not the first choice.
 #pragma once
 
-#include <optional>
 #include <vector>
 
 #include "core/mean_plane.h"
@@ -18,8 +17,8 @@ namespace tquad {
 
 class MeanValueSurface {
  public:
-  // nullopt when the loop's projection on its mean plane crosses or touches itself.
-  static std::optional<MeanValueSurface> over_loop(const std::vector<Vec3>& loop_points);
+  // Through the loop, over `plane` (MeanPlane::of_loop of the same loop).
+  MeanValueSurface(const MeanPlane& plane, const std::vector<Vec3>& loop_points);
 
   const MeanPlane& plane() const { return plane_; }
 

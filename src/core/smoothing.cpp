@@ -547,31 +547,41 @@ SmoothingResult smooth_mesh_in_plane(QuadMesh& mesh, int fixed, const Vec3& norm
 
 namespace {
 
-// A curved loop's mesh smoothed in its mean plane's coordinates, each interior node
-// placed by place(node, param, position, normal) (boundary corners signed by their
-// quads' own normals, normal zero); after merging doublets, the nodes that stay are
-// handed to prepare(nodes, quads), and placed on the surface first when `relift`.
-// nullopt where a node cannot be placed.
-template <typename Prepare, typename Place>
-std::optional<QuadMesh> smoothed_in_mean_plane(const QuadMesh& mesh, int fixed, const MeanPlane& plane,
-                                               bool relift, const Prepare& prepare, const Place& place) {
-  std::vector<Vec3> param, position = mesh.nodes, normal(mesh.nodes.size());
-  std::vector<Quad> quads = mesh.quads;
+// A curved loop's mesh in its mean plane's coordinates, doublets merged (once, for
+// both surfaces below): param (x, y, 0), position (the nodes where they are) and
+// quads as smooth_mesh takes them.
+struct CurvedLoopMesh {
+  std::vector<Vec3> param, position;
+  std::vector<Quad> quads;
+};
+
+CurvedLoopMesh in_mean_plane(const QuadMesh& mesh, int fixed, const MeanPlane& plane) {
+  CurvedLoopMesh out{{}, mesh.nodes, mesh.quads};
   for (const Vec3& p : mesh.nodes) {
     const Vec3 local = plane.local(p);
-    param.push_back({local.x, local.y, 0});
+    out.param.push_back({local.x, local.y, 0});
   }
-  remove_doublets(quads, fixed, param, position, normal);
-  prepare(position, quads);
-  for (std::size_t i = fixed; i < param.size(); ++i) {
+  std::vector<Vec3> unused_normals(mesh.nodes.size());  // doublets judged in their quads' own planes
+  remove_doublets(out.quads, fixed, out.param, out.position, unused_normals);
+  return out;
+}
+
+// That mesh smoothed with its interior nodes placed by `place`, moved onto the
+// surface first when `relift` (else they start where they are: on the surface it
+// stands for); the boundary's corners are signed by their quads' own normals (normal
+// zero). nullopt where a node cannot be placed.
+std::optional<QuadMesh> smoothed_on(const QuadMesh& mesh, int fixed, CurvedLoopMesh start, const PlaceNode& place,
+                                    bool relift) {
+  std::vector<Vec3> normal(start.param.size());
+  for (std::size_t i = fixed; i < start.param.size(); ++i) {
     Vec3 at;
-    if (!place(static_cast<int>(i), param[i], at, normal[i])) return std::nullopt;
-    if (relift) position[i] = at;
+    if (!place(static_cast<int>(i), start.param[i], at, normal[i])) return std::nullopt;
+    if (relift) start.position[i] = at;
   }
-  smooth_mesh(quads, fixed, param, position, normal, place);
+  smooth_mesh(start.quads, fixed, start.param, start.position, normal, place);
   QuadMesh smoothed = mesh;
-  smoothed.nodes = std::move(position);
-  smoothed.quads = std::move(quads);
+  smoothed.nodes = std::move(start.position);
+  smoothed.quads = std::move(start.quads);
   return smoothed;
 }
 
@@ -586,28 +596,27 @@ std::optional<QuadMesh> smoothed_in_mean_plane(const QuadMesh& mesh, int fixed, 
 // crosses itself.
 void smooth_curved_region(QuadMesh& mesh, int fixed) {
   const std::vector<Vec3> loop(mesh.nodes.begin(), mesh.nodes.begin() + fixed);
-  std::optional<FittedSurface> fitted = FittedSurface::over_loop(loop);
-  if (!fitted) return;
-  const auto fit = [&](const std::vector<Vec3>& nodes, const std::vector<Quad>& quads) {
-    fitted->fit_nodes(nodes, quads);
-  };
-  const auto on_fit = [&](int n, const Vec3& p, Vec3& at, Vec3& normal) { return fitted->place(n, p, at, normal); };
+  const std::optional<MeanPlane> plane = MeanPlane::of_loop(loop);
+  if (!plane) return;
+  const CurvedLoopMesh start = in_mean_plane(mesh, fixed, *plane);
+  FittedSurface fitted(*plane, fixed);
+  fitted.fit_nodes(start.position, start.quads);
+
+  const QuadMesh meshed = mesh;
   QualitySummary best = summarize_quality(mesh, std::nullopt);
-  const auto keep_if_better = [&](std::optional<QuadMesh>& smoothed) {
+  const auto keep_if_better = [&](std::optional<QuadMesh> smoothed) {
     if (!smoothed) return;
     const QualitySummary q = summarize_quality(*smoothed, std::nullopt);
     if (q.scaled_jacobian.min >= best.scaled_jacobian.min) best = q, mesh = std::move(*smoothed);
   };
-  const QuadMesh meshed = mesh;
-  std::optional<QuadMesh> smoothed = smoothed_in_mean_plane(meshed, fixed, fitted->plane(), false, fit, on_fit);
-  keep_if_better(smoothed);
+  keep_if_better(smoothed_on(meshed, fixed, start,
+                             [&](int n, const Vec3& p, Vec3& at, Vec3& normal) { return fitted.place(n, p, at, normal); },
+                             false));
   if (best.inverted == 0) return;
-  const std::optional<MeanValueSurface> membrane = MeanValueSurface::over_loop(loop);
-  if (!membrane) return;
-  const auto nothing = [](const std::vector<Vec3>&, const std::vector<Quad>&) {};
-  const auto on_membrane = [&](int, const Vec3& p, Vec3& at, Vec3& normal) { return membrane->place(p, at, normal); };
-  smoothed = smoothed_in_mean_plane(meshed, fixed, membrane->plane(), true, nothing, on_membrane);
-  keep_if_better(smoothed);
+  const MeanValueSurface membrane(*plane, loop);
+  keep_if_better(smoothed_on(meshed, fixed, start,
+                             [&](int, const Vec3& p, Vec3& at, Vec3& normal) { return membrane.place(p, at, normal); },
+                             true));
 }
 
 }  // namespace
