@@ -61,10 +61,24 @@ int merge_doublets(std::vector<Quad>& quads, int fixed, const std::vector<Vec3>&
   return merged;
 }
 
+// Whether some node not fixed lies in exactly two quads. Most meshes have no doublet;
+// one pass over the quads then spares the sweeps' adjacency lists (with the mesh copy
+// smooth_mesh_in_plane no longer makes, 0.55 s of a 1.5 M-quad rectangle's 1.5 s
+// smoothing).
+bool has_doublet(const std::vector<Quad>& quads, int fixed, std::size_t nodes) {
+  std::vector<unsigned char> quads_at(nodes, 0);
+  for (const Quad& q : quads) {
+    for (NodeId n : q) quads_at[n] = static_cast<unsigned char>(std::min(quads_at[n] + 1, 3));
+  }
+  return std::find(quads_at.begin() + std::min<std::size_t>(fixed, nodes), quads_at.end(), 2) != quads_at.end();
+}
+
 }  // namespace
 
 int remove_doublets(std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param, std::vector<Vec3>& position,
                     std::vector<Vec3>& normal, bool even_if_worse, int* refused) {
+  if (refused) *refused = 0;
+  if (!has_doublet(quads, fixed, position.size())) return 0;
   std::vector<char> quad_gone(quads.size(), 0), node_gone(position.size(), 0);
   int removed = 0, refusals = 0, merged = 0;
   // A merge can leave a neighbour in two quads; a few sweeps reach them.

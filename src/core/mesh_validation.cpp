@@ -2,18 +2,15 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <numeric>
-#include <tuple>
+#include <cstring>
+#include <utility>
 #include <vector>
+
+#include "core/node_adjacency.h"
 
 namespace tquad {
 
 namespace {
-
-std::uint64_t edge_key(NodeId a, NodeId b) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-         static_cast<std::uint32_t>(b);
-}
 
 std::string check_quads(const QuadMesh& mesh) {
   const auto n = static_cast<NodeId>(mesh.nodes.size());
@@ -39,33 +36,67 @@ bool is_boundary_segment(NodeId a, NodeId b, const std::vector<int>& start) {
   return false;
 }
 
+std::string edge_name(NodeId a, NodeId b) { return std::to_string(a) + "-" + std::to_string(b); }
+
+// Linear in the mesh's size (sorting every directed edge, as this did before, took
+// 1.0 s of the 1.4 s check of a 1.5 M-quad rectangle, counts 1000, 1100, 1200, 1300,
+// and the check runs twice on the boundary route): each edge is listed at its lower node with the
+// other node and its direction, (other << 1) | (runs from the higher node), so a
+// node's short list holds every quad side between it and a higher neighbour.
 std::string check_edges(const QuadMesh& mesh, const std::vector<int>& start) {
   const int boundary_points = start.back();
-  std::vector<std::uint64_t> directed;
-  directed.reserve(mesh.quads.size() * 4);
-  for (const Quad& q : mesh.quads) {
-    for (int i = 0; i < 4; ++i) directed.push_back(edge_key(q[i], q[(i + 1) % 4]));
-  }
-  std::sort(directed.begin(), directed.end());
-  const auto repeated = std::adjacent_find(directed.begin(), directed.end());
-  if (repeated != directed.end()) {
-    return "edge " + std::to_string(*repeated >> 32) + "-" + std::to_string(*repeated & 0xffffffffu) +
-           " is used twice in the same direction (overlapping or flipped quads)";
-  }
-  long long boundary_found = 0;
-  for (std::uint64_t e : directed) {
-    const auto a = static_cast<NodeId>(e >> 32), b = static_cast<NodeId>(e & 0xffffffffu);
-    if (std::binary_search(directed.begin(), directed.end(), edge_key(b, a))) continue;
-    if (!is_boundary_segment(a, b, start)) {
-      return "edge " + std::to_string(a) + "-" + std::to_string(b) +
-             " belongs to one quad only but is not a boundary segment (the mesh has a hole or a crack)";
+  const CompressedLists sides = CompressedLists::build(mesh.nodes.size(), [&](auto add) {
+    for (const Quad& q : mesh.quads) {
+      for (int i = 0; i < 4; ++i) {
+        const NodeId a = q[i], b = q[(i + 1) % 4];
+        add(std::min(a, b), (std::max(a, b) << 1) | (a > b ? 1 : 0));
+      }
     }
-    ++boundary_found;
+  });
+  std::vector<int> list;
+  long long boundary_found = 0;
+  for (NodeId low = 0; low + 1 < static_cast<NodeId>(sides.offsets.size()); ++low) {
+    list.assign(sides.items.begin() + sides.offsets[low], sides.items.begin() + sides.offsets[low + 1]);
+    std::sort(list.begin(), list.end());
+    for (std::size_t k = 0; k < list.size();) {
+      const NodeId high = list[k] >> 1;
+      std::size_t end = k;
+      while (end < list.size() && list[end] >> 1 == high) ++end;
+      const auto from_to = [&](int side) { return side & 1 ? std::pair(high, low) : std::pair(low, high); };
+      for (std::size_t j = k + 1; j < end; ++j) {
+        if (list[j] == list[j - 1]) {
+          const auto [a, b] = from_to(list[j]);
+          return "edge " + edge_name(a, b) + " is used twice in the same direction (overlapping or flipped quads)";
+        }
+      }
+      if (end - k == 1) {  // in one quad only: a boundary segment, in its direction
+        const auto [a, b] = from_to(list[k]);
+        if (!is_boundary_segment(a, b, start)) {
+          return "edge " + edge_name(a, b) +
+                 " belongs to one quad only but is not a boundary segment (the mesh has a hole or a crack)";
+        }
+        ++boundary_found;
+      }
+      k = end;
+    }
   }
   if (boundary_found != boundary_points) {
     return std::to_string(boundary_points - boundary_found) + " boundary segments belong to no quad";
   }
   return "";
+}
+
+// A position's hash, equal for equal coordinates (-0 and +0 alike).
+std::uint64_t position_hash(const Vec3& p) {
+  std::uint64_t h = 0x9e3779b97f4a7c15ull;
+  for (double c : {p.x + 0.0, p.y + 0.0, p.z + 0.0}) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &c, sizeof bits);
+    h ^= bits + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+    h *= 0xbf58476d1ce4e5b9ull;
+    h ^= h >> 31;
+  }
+  return h;
 }
 
 std::string check_nodes(const QuadMesh& mesh) {
@@ -74,15 +105,20 @@ std::string check_nodes(const QuadMesh& mesh) {
   for (std::size_t i = 0; i < used.size(); ++i) {
     if (!used[i]) return "node " + std::to_string(i) + " belongs to no quad";
   }
-  std::vector<NodeId> order(mesh.nodes.size());
-  std::iota(order.begin(), order.end(), 0);
-  auto key = [&](NodeId i) { const Vec3& p = mesh.nodes[i]; return std::tie(p.x, p.y, p.z); };
-  std::sort(order.begin(), order.end(), [&](NodeId a, NodeId b) { return key(a) < key(b); });
-  for (std::size_t i = 1; i < order.size(); ++i) {
-    if (mesh.nodes[order[i]] == mesh.nodes[order[i - 1]]) {
-      return "nodes " + std::to_string(order[i - 1]) + " and " + std::to_string(order[i]) +
-             " are at the same position";
+  // Coincident nodes by an open-addressing hash table of node indices + 1 (0: empty),
+  // at most half full: linear, where sorting the positions took 0.4 s of 1.5 M nodes.
+  std::size_t size = 2;
+  while (size < 2 * mesh.nodes.size()) size *= 2;
+  std::vector<NodeId> slots(size, 0);
+  for (NodeId i = 0; i < static_cast<NodeId>(mesh.nodes.size()); ++i) {
+    std::size_t slot = position_hash(mesh.nodes[i]) & (size - 1);
+    for (; slots[slot] != 0; slot = (slot + 1) & (size - 1)) {
+      const NodeId other = slots[slot] - 1;
+      if (mesh.nodes[other] == mesh.nodes[i]) {
+        return "nodes " + std::to_string(other) + " and " + std::to_string(i) + " are at the same position";
+      }
     }
+    slots[slot] = i + 1;
   }
   return "";
 }
@@ -98,6 +134,10 @@ std::string check_domain_mesh(const QuadMesh& mesh, const std::vector<int>& loop
   for (int size : loop_sizes) start.push_back(start.back() + size);
   const int boundary_points = start.back();
   const int holes = static_cast<int>(loop_sizes.size()) - 1;
+  // check_edges packs a node index and a direction bit into an int.
+  if (mesh.nodes.size() >= (std::size_t{1} << 30)) {
+    return "the mesh has " + std::to_string(mesh.nodes.size()) + " nodes, more than this check takes (2^30)";
+  }
   std::string problem = check_quads(mesh);
   if (problem.empty()) problem = check_edges(mesh, start);
   if (problem.empty()) problem = check_nodes(mesh);

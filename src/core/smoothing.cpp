@@ -292,10 +292,10 @@ class Smoother {
   }
 
   // Tries node n from `start` along `direction` (mesh coordinates, unit), from `step`
-  // halving down to kSmallestStep of `shortest`; true once try_move keeps one.
-  bool line_search(int n, const Vec3& start, const Vec3& direction, double step, double shortest,
+  // halving down to `smallest`; true once try_move keeps one.
+  bool line_search(int n, const Vec3& start, const Vec3& direction, double step, double smallest,
                    LocalQuality& best) {
-    for (; step > shortest * kSmallestStep; step *= 0.5) {
+    for (; step > smallest; step *= 0.5) {
       if (try_move(n, start + step * direction, best)) return true;
     }
     return false;
@@ -308,6 +308,8 @@ class Smoother {
   struct AscentStep {
     double first = 0, second = 0;  // unit direction in the node's frame
     double length = 0;              // first step, in mesh coordinates
+    // No step shorter than this is tried (besides kSmallestStep of the shortest edge).
+    double shortest_step = 0;
   };
   template <typename Choose>
   bool ascend(int n, LocalQuality& best, int iterations, const Choose& choose) {
@@ -320,7 +322,8 @@ class Smoother {
       const std::optional<AscentStep> step = choose(shortest);
       if (!step) break;
       const Vec3 direction = step->first * frame.first + step->second * frame.second;
-      if (!line_search(n, param_[n], direction, step->length, shortest, best)) break;
+      const double smallest = std::max(shortest * kSmallestStep, step->shortest_step);
+      if (!line_search(n, param_[n], direction, step->length, smallest, best)) break;
       moved = true;
     }
     return moved;
@@ -352,7 +355,7 @@ class Smoother {
 
   // Raises the sum of the corners around node n by steepest ascent, at most
   // kSumAscentIterations steps, each kept only as try_move allows (the worst corner
-  // held).
+  // held), along the sum's gradient projected so that no corner at the worst falls.
   bool ascend_corner_sum(int n, LocalQuality& best) {
     return ascend(n, best, kSumAscentIterations, [&](double shortest) -> std::optional<AscentStep> {
       double along_first = 0, along_second = 0;
@@ -360,9 +363,32 @@ class Smoother {
         along_first += gradient_first_[i];
         along_second += gradient_second_[i];
       }
-      const double length = std::hypot(along_first, along_second);
-      if (!(length > 0)) return std::nullopt;
-      return AscentStep{along_first / length, along_second / length, kLargestStep * shortest};
+      // The worst corner must hold: the sum's gradient without its part that would
+      // lower a corner at the worst (to first order).
+      const double worst = *std::min_element(values_.begin(), values_.end());
+      for (std::size_t i = 0; i < values_.size(); ++i) {
+        if (values_[i] > worst + kActiveBand) continue;
+        const double g1 = gradient_first_[i], g2 = gradient_second_[i], gg = g1 * g1 + g2 * g2;
+        const double along = along_first * g1 + along_second * g2;
+        if (along >= 0 || !(gg > 0)) continue;
+        along_first -= along / gg * g1;
+        along_second -= along / gg * g2;
+      }
+      for (std::size_t i = 0; i < values_.size(); ++i) {
+        if (values_[i] > worst + kActiveBand) continue;
+        if (along_first * gradient_first_[i] + along_second * gradient_second_[i] < -1e-12) return std::nullopt;
+      }
+      const double rate = std::hypot(along_first, along_second);  // the sum's gain per unit step
+      if (!(rate > 0)) return std::nullopt;
+      // Steps whose predicted gain is under kSumGain would not be kept (to first
+      // order), so none is tried. Measured on a 1.5 M-quad rectangle (counts 1000,
+      // 1100, 1200, 1300): with the sum's plain gradient 99% of these ascents failed
+      // (it lowered a corner at the worst), spending 0.76 M of the smoothing's
+      // 1.17 M node placements; projected and cut short so, 0.29 M, and twice as
+      // many moves kept. On the 16 parts means rise by up to 0.005.
+      const double first_step = kLargestStep * shortest;
+      if (first_step * rate < kSumGain) return std::nullopt;
+      return AscentStep{along_first / rate, along_second / rate, first_step, kSumGain / rate};
     });
   }
 
@@ -512,36 +538,47 @@ SmoothingResult smooth_mesh(const std::vector<Quad>& quads, int fixed, std::vect
   return result;
 }
 
-SmoothingResult smooth_planar_mesh(QuadMesh& mesh, int fixed, int& merged, const SmoothingOptions& options) {
+namespace {
+
+// Nodes in a plane's frame (x, y, 0): their own mesh coordinates, normal +z,
+// cleaned (doublets.h) and smoothed; `quads` are renumbered as doublets go.
+SmoothingResult smooth_in_frame(std::vector<Quad>& quads, int fixed, std::vector<Vec3>& nodes, int& merged,
+                                const SmoothingOptions& options) {
   const Vec3 up{0, 0, 1};
-  std::vector<Vec3> param = mesh.nodes, normal(mesh.nodes.size(), up);
-  merged = remove_doublets(mesh.quads, fixed, param, mesh.nodes, normal);
+  std::vector<Vec3> param = nodes, normal(nodes.size(), up);
+  merged = remove_doublets(quads, fixed, param, nodes, normal);
   const PlaceNode in_plane = [&](int, const Vec3& p, Vec3& position, Vec3& n) {
     position = p;
     n = up;
     return true;
   };
-  return smooth_mesh(mesh.quads, fixed, param, mesh.nodes, normal, in_plane, options);
+  return smooth_mesh(quads, fixed, param, nodes, normal, in_plane, options);
+}
+
+}  // namespace
+
+SmoothingResult smooth_planar_mesh(QuadMesh& mesh, int fixed, int& merged, const SmoothingOptions& options) {
+  return smooth_in_frame(mesh.quads, fixed, mesh.nodes, merged, options);
 }
 
 SmoothingResult smooth_mesh_in_plane(QuadMesh& mesh, int fixed, const Vec3& normal, int& merged,
                                      const SmoothingOptions& options) {
   merged = 0;
   if (fixed <= 0 || fixed >= static_cast<int>(mesh.nodes.size())) return {};
-  // A right-handed frame (e1, e2, normal) at the first boundary node.
+  // A right-handed frame (e1, e2, normal) at the first boundary node. Only the
+  // nodes are copied into it (the quads are renumbered in place; see has_doublet in
+  // doublets.cpp for what the copy cost).
   const MeanPlane plane = MeanPlane::with_normal(mesh.nodes[0], normal);
-  QuadMesh local = mesh;
-  for (Vec3& p : local.nodes) {
+  std::vector<Vec3> local;
+  local.reserve(mesh.nodes.size());
+  for (const Vec3& p : mesh.nodes) {
     const Vec3 in_plane = plane.local(p);
-    p = {in_plane.x, in_plane.y, 0};
+    local.push_back({in_plane.x, in_plane.y, 0});
   }
-  const SmoothingResult result = smooth_planar_mesh(local, fixed, merged, options);
-  std::vector<Vec3> nodes(mesh.nodes.begin(), mesh.nodes.begin() + fixed);
-  for (std::size_t i = fixed; i < local.nodes.size(); ++i) {
-    nodes.push_back(plane.point_at(local.nodes[i].x, local.nodes[i].y, 0));
-  }
-  mesh.nodes = std::move(nodes);
-  mesh.quads = std::move(local.quads);
+  const SmoothingResult result = smooth_in_frame(mesh.quads, fixed, local, merged, options);
+  // The boundary nodes keep their coordinates bit for bit; the others come back.
+  mesh.nodes.resize(local.size());
+  for (std::size_t i = fixed; i < local.size(); ++i) mesh.nodes[i] = plane.point_at(local[i].x, local[i].y, 0);
   return result;
 }
 

@@ -20,7 +20,8 @@
 //     of that worst corner (max_min_ascent.h): gradients by finite differences, a
 //     step predicted to where another corner would become the worst, halved until
 //     the move is kept; where it is under good_enough only, the steepest ascent of
-//     the corners' sum, the worst held.
+//     the corners' sum, the worst held (the gradient projected so that no corner at
+//     the worst falls).
 // Each corner is judged by the lower of its scaled Jacobian against the surface
 // normals and in its quad's own plane.
 #pragma once
