@@ -127,6 +127,21 @@ class MeshObjectTest(unittest.TestCase):
             self.assertEqual(list(femmesh.getElementNodes(j)), [n + 1 for n in quad],
                              f"quad {j} differs from the CLI's")
 
+    def test_the_vtk_file_route_is_taken_and_equals_node_by_node(self):
+        """to_femmesh reads a temporary VTK file on this FreeCAD (not the slow fallback),
+        and that gives the same nodes and quads as addNode/addFace."""
+        from freecad.templatequad import meshing
+        mesh = meshing.mesh_shape(self._filleted_box(), size=3.0)
+        by_file = meshing.femmesh_from_vtk_file(mesh)
+        self.assertIsNotNone(by_file, "FreeCAD did not read the VTK file back as this mesh")
+        by_node = meshing.femmesh_node_by_node(mesh)
+        self.assertEqual(by_file.NodeCount, by_node.NodeCount)
+        self.assertEqual(by_file.QuadrangleCount, by_node.QuadrangleCount)
+        for i in range(1, by_node.NodeCount + 1):
+            self.assertEqual(tuple(by_file.getNodeById(i)), tuple(by_node.getNodeById(i)), f"node {i}")
+        for j in range(1, by_node.QuadrangleCount + 1):
+            self.assertEqual(by_file.getElementNodes(j), by_node.getElementNodes(j), f"quad {j}")
+
     def test_box_is_all_quads_and_equals_tquad(self):
         from freecad.templatequad import make_mesh
         part = self._part(Part.makeBox(10, 20, 30), "Box")

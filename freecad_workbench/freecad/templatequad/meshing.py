@@ -131,10 +131,70 @@ def to_femmesh(mesh):
 
     Node i (0-based in tquad) becomes node i + 1; quad j becomes face element j + 1 with
     the same counter-clockwise node order, so the shell normals follow the CAD faces'
-    outer normals. Built with addNode/addFace: the simplest correct way, and fast enough
-    (about 6 s per million quads, see PLATFORM.md); a file round trip would only pay off
-    for meshes far larger than shells are meshed with.
+    outer normals. The mesh goes through a temporary legacy VTK file that FemMesh.read
+    takes in one C++ call (femmesh_from_vtk_file); where that FreeCAD cannot read it
+    (built without VTK) or reads something else, node by node (femmesh_node_by_node).
+    Measured by bench/freecad_transfer.py: see the README.
     """
+    femmesh = femmesh_from_vtk_file(mesh)
+    return femmesh if femmesh is not None else femmesh_node_by_node(mesh)
+
+
+def write_legacy_vtk(path: str, nodes, quads) -> None:
+    """write_legacy_vtk(): nodes (n x 3 floats) and quads (m x 4, 0-based) as a binary
+    legacy VTK unstructured grid (big-endian, as that format asks; cell type 9 = quad)."""
+    import numpy
+
+    nodes = numpy.asarray(nodes, dtype=float).reshape(-1, 3)
+    quads = numpy.asarray(quads).reshape(-1, 4)
+    cells = numpy.empty((len(quads), 5), dtype=">i4")
+    cells[:, 0] = 4
+    cells[:, 1:] = quads
+    with open(path, "wb") as out:
+        out.write(b"# vtk DataFile Version 3.0\nTemplateQuad mesh\nBINARY\nDATASET UNSTRUCTURED_GRID\n")
+        out.write(b"POINTS %d double\n" % len(nodes))
+        out.write(nodes.astype(">f8").tobytes())
+        out.write(b"\nCELLS %d %d\n" % (len(quads), 5 * len(quads)))
+        out.write(cells.tobytes())
+        out.write(b"\nCELL_TYPES %d\n" % len(quads))
+        out.write(numpy.full(len(quads), 9, dtype=">i4").tobytes())
+        out.write(b"\n")
+
+
+def femmesh_from_vtk_file(mesh):
+    """femmesh_from_vtk_file(): the Fem.FemMesh read back from a temporary VTK file, or
+    None where FreeCAD cannot read it or what it read is not this mesh (counts, the
+    first and last node's position and quad's nodes)."""
+    import tempfile
+
+    import Fem
+
+    if len(mesh.quads) == 0:
+        return None
+    femmesh = Fem.FemMesh()
+    with tempfile.TemporaryDirectory(prefix="templatequad-") as folder:
+        path = os.path.join(folder, "mesh.vtk")
+        write_legacy_vtk(path, mesh.nodes, mesh.quads)
+        try:
+            femmesh.read(path)
+        except Exception:  # FreeCAD without VTK raises here; any failure means fall back
+            return None
+    nodes = mesh.nodes
+    if femmesh.NodeCount != len(nodes) or femmesh.QuadrangleCount != len(mesh.quads) \
+            or femmesh.FaceCount != len(mesh.quads):
+        return None
+    for node_id in (1, len(nodes)):
+        if tuple(femmesh.getNodeById(node_id)) != tuple(float(c) for c in nodes[node_id - 1]):
+            return None
+    for quad_id in (1, len(mesh.quads)):
+        if tuple(femmesh.getElementNodes(quad_id)) != tuple(int(n) + 1 for n in mesh.quads[quad_id - 1]):
+            return None
+    return femmesh
+
+
+def femmesh_node_by_node(mesh):
+    """femmesh_node_by_node(): the same Fem.FemMesh built with addNode/addFace, one Python
+    call per node and per quad (the fallback of to_femmesh)."""
     import Fem  # here, not at module level: importing this package stays cheap
 
     femmesh = Fem.FemMesh()
