@@ -1,0 +1,76 @@
+#!/usr/bin/python3
+"""The whole `tquad mesh` command on one large four-curve boundary: time and peak memory.
+
+    /usr/bin/python3 bench/boundary_command.py [--counts 1000,1100,1200,1300] [--repeat 3]
+
+The boundary is a W x H rectangle (W, H = the first two counts / 1000) with evenly
+spaced points, the given counts on its four sides in turn (counts 1000, 1100, 1200,
+1300 give 1.52 M quads through T2). It is written to a temporary .json and meshed to
+a .vtu by the tquad executable, as a user runs it: smoothed (the default) and with
+--no-smooth. Each variant: the least wall time of --repeat processes and the largest
+peak resident memory (the child's ru_maxrss), per quad. Asserts nothing.
+"""
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def rectangle(counts):
+    width, height = counts[0] / 1000.0, counts[1] / 1000.0
+    corners = [(0.0, 0.0), (width, 0.0), (width, height), (0.0, height)]
+    points, corner_indices = [], []
+    for side, count in enumerate(counts):
+        (ax, ay), (bx, by) = corners[side], corners[(side + 1) % 4]
+        corner_indices.append(len(points))
+        points += [[ax + (bx - ax) * i / count, ay + (by - ay) * i / count] for i in range(count)]
+    return {"points": points, "corners": corner_indices}
+
+
+def run_once(command):
+    """Wall seconds and peak resident bytes of one child process."""
+    start = time.perf_counter()
+    child = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    _, status, usage = os.wait4(child.pid, 0)
+    seconds = time.perf_counter() - start
+    child.stdout.close()
+    child.stderr.close()
+    if os.waitstatus_to_exitcode(status) != 0:
+        raise RuntimeError(f"{' '.join(command)} failed")
+    return seconds, usage.ru_maxrss * 1024
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--tquad", default=os.path.join(REPO, "build", "bin", "tquad"))
+    parser.add_argument("--counts", default="1000,1100,1200,1300")
+    parser.add_argument("--repeat", type=int, default=3)
+    args = parser.parse_args()
+    counts = [int(c) for c in args.counts.split(",")]
+    if len(counts) != 4 or min(counts) < 1 or sum(counts) % 2:
+        print("--counts: four positive counts with an even sum", file=sys.stderr)
+        return 2
+    with tempfile.TemporaryDirectory() as folder:
+        boundary, output = os.path.join(folder, "boundary.json"), os.path.join(folder, "mesh.vtu")
+        with open(boundary, "w") as f:
+            json.dump(rectangle(counts), f)
+        report = subprocess.run([args.tquad, "mesh", boundary, "-o", output, "--report", "json"],
+                                capture_output=True, text=True, check=True)
+        quads = json.loads(report.stdout)["quads"]
+        print(f"counts {counts}: {quads:,} quads, {json.loads(report.stdout)['faces'][0]['template_tree']}")
+        for label, extra in (("smoothed (default)", []), ("--no-smooth", ["--no-smooth"])):
+            runs = [run_once([args.tquad, "mesh", boundary, "-o", output] + extra) for _ in range(args.repeat)]
+            seconds = min(r[0] for r in runs)
+            peak = max(r[1] for r in runs)
+            print(f"{label:20s} {seconds:6.2f} s  peak {peak / 2**20:7.1f} MiB = {peak / quads:5.1f} bytes per quad")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
