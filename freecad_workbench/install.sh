@@ -64,6 +64,7 @@ install() {
   trap 'rm -rf "$stage"' EXIT
   cp -R "$here/package.xml" "$here/freecad" "$here/resources" "$stage/"
   [[ -f "$here/README.md" ]] && cp "$here/README.md" "$stage/"
+  cp "$here/../LICENSE" "$stage/"  # package.xml names it
   cp -R "$module" "$stage/tquad"
   find "$stage" -name __pycache__ -type d -prune -exec rm -rf {} +
 

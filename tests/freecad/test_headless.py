@@ -43,6 +43,9 @@ class AddonInstallTest(unittest.TestCase):
         meta = FreeCAD.Metadata(path)
         self.assertEqual(meta.Name, "TemplateQuad", "package name")
         self.assertEqual(meta.Version, "0.1.0", "package version")
+        self.assertEqual([m["name"] for m in meta.Maintainer], ["TemplateQuad contributors"], "maintainer")
+        self.assertEqual([l["name"] for l in meta.License], ["LGPL-2.1-or-later"], "SPDX licence")
+        self.assertTrue(os.path.isfile(os.path.join(os.path.dirname(path), "LICENSE")), "licence file installed")
         workbenches = meta.Content.get("workbench", [])
         self.assertEqual([w.Classname for w in workbenches], ["TemplateQuadWorkbench"],
                          "one workbench entry with the workbench class name")
