@@ -1,6 +1,7 @@
 #include "core/untangle.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -11,6 +12,20 @@ namespace tquad {
 namespace {
 
 constexpr double kBadCorner = 1e-6;  // scaled Jacobian at or below: degenerate or inverted
+
+// The compass search's eight directions, (cos, sin) of d * pi / 4, computed once: they
+// were computed for every try, 3% of meshing U_Joint_2.stp.
+struct CompassDirections {
+  std::array<double, 8> cos, sin;
+  CompassDirections() {
+    for (int d = 0; d < 8; ++d) {
+      const double angle = d * M_PI / 4;
+      cos[d] = std::cos(angle);
+      sin[d] = std::sin(angle);
+    }
+  }
+};
+const CompassDirections kCompassDirections;
 
 class Untangler {
  public:
@@ -174,8 +189,7 @@ class Untangler {
         const Vec3 start = mesh_.nodes[n];
         Vec3 best_position = start;
         for (int d = 0; d < 8; ++d) {
-          const double angle = d * M_PI / 4;
-          mesh_.nodes[n] = start + step * (std::cos(angle) * e1 + std::sin(angle) * e2);
+          mesh_.nodes[n] = start + step * (kCompassDirections.cos[d] * e1 + kCompassDirections.sin[d] * e2);
           const double value = worst_corner_near(n);
           if (value > best + 1e-12) { best = value; best_position = mesh_.nodes[n]; moved = true; }
         }

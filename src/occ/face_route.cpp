@@ -1,11 +1,13 @@
 #include "occ/face_route.h"
 
 #include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <optional>
+#include <unordered_map>
 
 #include "core/input_error.h"
 #include "core/mesher.h"
@@ -244,6 +246,39 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
     outcome.internal = true;
   }
   return outcome;
+}
+
+bool reuse_unchanged_face(const ShapeIndex& index, int f, const std::vector<EdgeNodes>& before_edges,
+                          const std::vector<Vec3>& before_nodes, const std::vector<EdgeNodes>& edges,
+                          const std::vector<Vec3>& nodes, FaceOutcome& outcome) {
+  if (!outcome.ok || before_edges.size() != edges.size()) return false;
+  std::unordered_map<NodeId, NodeId> renumbered;
+  for (TopExp_Explorer it(index.face(f), TopAbs_EDGE); it.More(); it.Next()) {
+    const int e = index.edge_index(it.Current());
+    const EdgeNodes &before = before_edges[e], &now = edges[e];
+    if (before.degenerate != now.degenerate || before.params != now.params || before.nodes.size() != now.nodes.size()) {
+      return false;
+    }
+    for (std::size_t i = 0; i < now.nodes.size(); ++i) {
+      if (!(before_nodes[before.nodes[i]] == nodes[now.nodes[i]])) return false;
+      renumbered[before.nodes[i]] = now.nodes[i];
+    }
+  }
+  FaceOutcome kept = outcome;
+  const auto renumber = [&](std::vector<NodeId>& ids) {
+    for (NodeId& id : ids) {
+      const auto found = renumbered.find(id);
+      if (found == renumbered.end()) return false;
+      id = found->second;
+    }
+    return true;
+  };
+  if (!renumber(kept.boundary.nodes) || !renumber(kept.mesh.boundary_nodes)) return false;
+  for (NodeLoop& hole : kept.boundary.holes) {
+    if (!renumber(hole.nodes)) return false;
+  }
+  outcome = std::move(kept);
+  return true;
 }
 
 }  // namespace tquad

@@ -31,4 +31,13 @@ struct FaceOutcome {
 FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<EdgeNodes>& edges,
                           const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size);
 
+// A face meshed before the edges were discretized again (a refinement round) taken
+// over as it is, where none of its edges changed: the same curve parameters and node
+// positions, so mesh_one_face would give the same mesh. Its shared node ids are
+// renumbered from `before_edges` to `edges`. False (outcome untouched) where an edge
+// changed, the outcome was a refusal, or an id is not on the face's edges.
+bool reuse_unchanged_face(const ShapeIndex& index, int f, const std::vector<EdgeNodes>& before_edges,
+                          const std::vector<Vec3>& before_nodes, const std::vector<EdgeNodes>& edges,
+                          const std::vector<Vec3>& nodes, FaceOutcome& outcome);
+
 }  // namespace tquad
