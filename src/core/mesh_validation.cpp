@@ -38,11 +38,11 @@ bool is_boundary_segment(NodeId a, NodeId b, const std::vector<int>& start) {
 
 std::string edge_name(NodeId a, NodeId b) { return std::to_string(a) + "-" + std::to_string(b); }
 
-// Linear in the mesh's size (sorting every directed edge, as this did before, took
-// 1.0 s of the 1.4 s check of a 1.5 M-quad rectangle, counts 1000, 1100, 1200, 1300,
-// and the check runs twice on the boundary route): each edge is listed at its lower node with the
-// other node and its direction, (other << 1) | (runs from the higher node), so a
-// node's short list holds every quad side between it and a higher neighbour.
+// Linear in the mesh's size: sorting every directed edge, as this did before, took
+// 1.0 s of the 1.4 s check of a 1.5 M-quad rectangle (counts 1000, 1100, 1200, 1300),
+// and the boundary route checks twice. Each quad side is listed at its lower node
+// with the other node and its direction, (other << 1) | (runs from the higher node),
+// so a node's short list holds every side between it and a higher neighbour.
 std::string check_edges(const QuadMesh& mesh, const std::vector<int>& start) {
   const int boundary_points = start.back();
   const CompressedLists sides = CompressedLists::build(mesh.nodes.size(), [&](auto add) {
