@@ -104,7 +104,7 @@ TEST(MeshValidation, FindsCoincidentNodesIncludingSignedZeros) {
   EXPECT_TRUE(names(check_disk_mesh(mesh, 8), "nodes 0 and 8 are at the same position"));
 }
 
-TEST(MeshValidation, FindsANodeCountThatIsNotADisks) {
+TEST(MeshValidation, FindsANodeCountNoDiskHas) {
   // The grid and, apart from it, a cube's closed surface: every edge is in two quads
   // or on the loop, every node used, none coincident; only V = 1 + F + E/2 fails
   // (17 nodes where 1 + 10 + 4 = 15).

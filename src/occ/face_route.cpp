@@ -264,20 +264,28 @@ bool reuse_unchanged_face(const ShapeIndex& index, int f, const std::vector<Edge
       renumbered[before.nodes[i]] = now.nodes[i];
     }
   }
-  FaceOutcome kept = outcome;
-  const auto renumber = [&](std::vector<NodeId>& ids) {
+  // The ids renumbered into copies first (not a copy of the whole outcome, its mesh
+  // included), so that a missing id leaves the outcome as it was.
+  const auto renumbered_ids = [&](std::vector<NodeId> ids, std::vector<NodeId>& out) {
     for (NodeId& id : ids) {
       const auto found = renumbered.find(id);
       if (found == renumbered.end()) return false;
       id = found->second;
     }
+    out = std::move(ids);
     return true;
   };
-  if (!renumber(kept.boundary.nodes) || !renumber(kept.mesh.boundary_nodes)) return false;
-  for (NodeLoop& hole : kept.boundary.holes) {
-    if (!renumber(hole.nodes)) return false;
+  std::vector<NodeId> loop, mesh_nodes;
+  std::vector<std::vector<NodeId>> holes(outcome.boundary.holes.size());
+  if (!renumbered_ids(outcome.boundary.nodes, loop) || !renumbered_ids(outcome.mesh.boundary_nodes, mesh_nodes)) {
+    return false;
   }
-  outcome = std::move(kept);
+  for (std::size_t h = 0; h < holes.size(); ++h) {
+    if (!renumbered_ids(outcome.boundary.holes[h].nodes, holes[h])) return false;
+  }
+  outcome.boundary.nodes = std::move(loop);
+  outcome.mesh.boundary_nodes = std::move(mesh_nodes);
+  for (std::size_t h = 0; h < holes.size(); ++h) outcome.boundary.holes[h].nodes = std::move(holes[h]);
   return true;
 }
 
