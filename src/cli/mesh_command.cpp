@@ -121,7 +121,7 @@ void print_summary(std::ostream& out, const MeshCommand& command, const ShapeMes
       out << "  face " << f.face << ": " << f.quad_count << " quads, template tree " << f.template_tree << "\n";
     }
     for (const RefusedFace& f : mesh.refused_faces) {
-      out << "  face " << f.face << " refused: " << one_line(f.reason) << "\n";
+      out << "  face " << f.face << " refused (" << refusal_code_name(f.code) << "): " << one_line(f.reason) << "\n";
     }
   }
   out << "  Lee-Lo min " << fixed(quality.lee_lo.min, 3) << " avg " << fixed(quality.lee_lo.avg, 3)
@@ -222,6 +222,8 @@ ShapeMesh mesh_shape_input(const MeshCommand& command, OutputFormat format, Qual
   for (int f : read.invalid_faces) options.damaged_faces[f] = kInvalidFaceReason;
   try {
     result = mesh_shape(shape, options);
+  } catch (const FacesRefusedError& e) {
+    throw InputError(command.input + ": " + e.what() + " (--keep-going meshes the other faces)");
   } catch (const InputError& e) {
     throw InputError(command.input + ": " + e.what());
   }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/face_refusal.h"
 #include "core/quad_mesh.h"
 
 namespace tquad {
@@ -32,7 +33,9 @@ struct FaceMesh {
 
 struct RefusedFace {
   int face = 0;
-  std::string reason;
+  std::string reason;  // names the face (0-based) and what failed; no command-line advice
+  RefusalCode code = RefusalCode::cannot_mesh;
+  std::vector<int> vertices;  // shape vertices on the face's outer wire, in its order
 };
 
 struct ShapeMesh {

@@ -50,7 +50,9 @@ nlohmann::ordered_json mesh_report_json(const ShapeMesh& mesh, const QualitySumm
   for (const RefusedFace& f : mesh.refused_faces) {
     nlohmann::ordered_json face;
     face["face"] = f.face;
+    face["code"] = refusal_code_name(f.code);
     face["reason"] = f.reason;
+    face["vertices"] = f.vertices;
     refused.push_back(std::move(face));
   }
   report["refused_faces"] = std::move(refused);

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/face_refusal.h"
 #include "core/input_error.h"
 #include "core/planar_domain.h"
 #include "occ/occ_vec.h"
@@ -197,8 +198,8 @@ FaceBoundary around_pole(const FaceBoundary& b, const TopoDS_Face& face, int fac
                          const std::vector<Vec3>& nodes) {
   const BRepAdaptor_Surface surface(face);
   if (!surface.IsUPeriodic()) {
-    throw InputError("face " + std::to_string(face_index) +
-                     " has a seam and a pole but is not periodic in u; not supported yet");
+    throw FaceRefusalError(RefusalCode::not_supported, "face " + std::to_string(face_index) +
+                                                           " has a seam and a pole but is not periodic in u; not supported yet");
   }
   FaceBoundary out;
   out.has_degenerate_edge = true;
@@ -219,7 +220,8 @@ FaceBoundary around_pole(const FaceBoundary& b, const TopoDS_Face& face, int fac
     }
   }
   if (out.nodes.size() < 2) {
-    throw InputError("face " + std::to_string(face_index) + " has no edge besides its seam and pole");
+    throw FaceRefusalError(RefusalCode::not_supported,
+                           "face " + std::to_string(face_index) + " has no edge besides its seam and pole");
   }
   const PolarMap m = polar_map_around(uv, b.pole_v, surface.UPeriod());
   for (const Vec3& p : uv) out.uv.push_back(uv_to_polar(m, p));
@@ -289,7 +291,7 @@ FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::v
   const TopoDS_Face& face = index.face(face_index);
   const TopoDS_Wire outer = BRepTools::OuterWire(face);
   if (outer.IsNull()) {
-    throw InputError("face " + std::to_string(face_index) + " has no outer wire (a damaged file?)");
+    throw FaceRefusalError(RefusalCode::damaged, "face " + std::to_string(face_index) + " has no outer wire (a damaged file?)");
   }
   FaceBoundary b;
   for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) {
@@ -300,7 +302,7 @@ FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::v
   }
   const WireWalk walk = walk_wire(outer, face, face_index, index, edges);
   if (walk.nodes.empty()) {
-    throw InputError("face " + std::to_string(face_index) + " has no edge in its outer wire (a damaged file?)");
+    throw FaceRefusalError(RefusalCode::damaged, "face " + std::to_string(face_index) + " has no edge in its outer wire (a damaged file?)");
   }
   b.nodes = walk.nodes;
   b.uv = walk.uv;

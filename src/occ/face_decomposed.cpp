@@ -13,6 +13,7 @@
 #include "core/mapped_ring.h"
 #include "core/face_decomposition.h"
 #include "core/hole_rings.h"
+#include "core/face_refusal.h"
 #include "core/input_error.h"
 #include "core/o_grid.h"
 #include "occ/occ_vec.h"
@@ -63,11 +64,11 @@ class FaceChart {
       : face_(face), name_("face " + std::to_string(face_index)), b_(b), nodes_(nodes), surface_(face) {
     if (b.has_degenerate_edge || b.polar) throw InputError(name_ + " has a pole; it is not decomposed");
     if (b.uv.size() < 3 || b.uv.size() != b.nodes.size()) {
-      throw InputError(name_ + " has only " + std::to_string(b.nodes.size()) + " boundary segments");
+      throw FaceRefusalError(RefusalCode::too_coarse, name_ + " has only " + std::to_string(b.nodes.size()) + " boundary segments");
     }
     for (const NodeLoop& hole : b.holes) {
       if (hole.uv.size() < 3 || hole.uv.size() != hole.nodes.size()) {
-        throw InputError(name_ + " has a hole of only " + std::to_string(hole.nodes.size()) + " segments");
+        throw FaceRefusalError(RefusalCode::too_coarse, name_ + " has a hole of only " + std::to_string(hole.nodes.size()) + " segments");
       }
     }
     chart_ = chart_for(surface_, b.uv);

@@ -12,6 +12,7 @@
 
 #include "core/disk_o_grid.h"
 #include "core/pole_sector_mesh.h"
+#include "core/face_refusal.h"
 #include "core/input_error.h"
 #include "core/planar_self_intersection.h"
 #include "core/quality.h"
@@ -101,8 +102,8 @@ FaceMeshResult mesh_in_space(const TopoDS_Face& face, const FaceBoundary& b, con
   std::sort(sorted.begin(), sorted.end());
   const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
   if (twice != sorted.end()) {
-    throw InputError("the boundary passes twice through node " + std::to_string(*twice) +
-                     " (a seam); a face with both a seam and a pole is not supported yet");
+    throw FaceRefusalError(RefusalCode::not_supported, "the boundary passes twice through node " + std::to_string(*twice) +
+                                                           " (a seam); a face with both a seam and a pole is not supported yet");
   }
   std::vector<Vec3> loop;
   for (NodeId id : b.nodes) loop.push_back(nodes[id]);
@@ -259,8 +260,8 @@ FaceMeshResult mesh_face(const ShapeIndex& index, int face_index, const FaceBoun
   const TopoDS_Face& face = index.face(face_index);
   const std::string name = "face " + std::to_string(face_index);
   if (boundary.nodes.size() < 4) {
-    throw InputError(name + " has only " + std::to_string(boundary.nodes.size()) +
-                     " boundary segments; use a smaller --size");
+    throw FaceRefusalError(RefusalCode::too_coarse, name + " has only " + std::to_string(boundary.nodes.size()) +
+                                                        " boundary segments; a smaller element size gives it more");
   }
   // A degenerate edge (a pole) is one point in space but a segment in (u, v): the
   // parameter-space mesh would collapse quads there, so such a face takes the 3D route,

@@ -9,6 +9,7 @@
 #include <optional>
 #include <unordered_map>
 
+#include "core/face_refusal.h"
 #include "core/input_error.h"
 #include "core/mesher.h"
 #include "core/quality.h"
@@ -92,14 +93,15 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
   const auto start = std::chrono::steady_clock::now();
   const std::string name = "face " + std::to_string(f);
   std::optional<FaceMeshResult> best;
-  std::string refusal;
-  bool refusal_internal = false;  // the last refusal is the mesher's failure, not the input's
+  std::string refusal;  // the last route's refusal, and its kind (internal: the mesher failed)
+  RefusalCode refusal_code = RefusalCode::cannot_mesh;
   const auto note_refusal = [&](const std::exception& e) {
     refusal = e.what();
-    refusal_internal = dynamic_cast<const InputError*>(&e) == nullptr;
+    refusal_code = dynamic_cast<const InputError*>(&e) == nullptr ? RefusalCode::internal : RefusalCode::cannot_mesh;
+    if (const auto* known = dynamic_cast<const FaceRefusalError*>(&e)) refusal_code = known->code();
   };
   const bool pole = boundary.has_degenerate_edge || boundary.polar;
-  if (boundary.inner_wires > 0 && pole) throw InputError(name + " has a hole and a pole; not supported yet");
+  if (boundary.inner_wires > 0 && pole) throw FaceRefusalError(RefusalCode::not_supported, name + " has a hole and a pole; not supported yet");
   bool decompose = !pole;
   const auto requested = options.corners.find(f);
   const bool user_corners = requested != options.corners.end();
@@ -158,8 +160,8 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     }
   }
   if (!best) {
-    if (refusal_internal) throw std::runtime_error(refusal);
-    throw InputError(refusal);
+    if (refusal_code == RefusalCode::internal) throw std::runtime_error(refusal);
+    throw FaceRefusalError(refusal_code, refusal);
   }
   // --corners best: more corner sets compete with the routes above (the natural choice).
   std::optional<FaceMeshResult> natural;
@@ -229,21 +231,26 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
     outcome.ok = true;
   } catch (const InvertedQuadsError& e) {
     outcome.reason = e.what();
+    outcome.code = RefusalCode::inverted_quads;
     outcome.finer_edges_may_help = e.quads <= kRefinableQuads;
+  } catch (const FaceRefusalError& e) {
+    outcome.reason = e.what();
+    outcome.code = e.code();
   } catch (const InputError& e) {
     outcome.reason = e.what();
   } catch (const std::bad_alloc&) {
     outcome.reason = std::string("face ") + std::to_string(f) + ": internal failure: out of memory";
-    outcome.internal = true;
+    outcome.code = RefusalCode::internal;
   } catch (const std::exception& e) {
     outcome.reason = std::string("face ") + std::to_string(f) + ": internal failure: " + e.what();
-    outcome.internal = true;
+    outcome.code = RefusalCode::internal;
   } catch (const Standard_Failure& e) {  // OpenCASCADE's on the face's geometry; no std::exception
     outcome.reason = std::string("face ") + std::to_string(f) + ": OpenCASCADE failure: " + e.GetMessageString() +
                      " (a damaged face?)";
+    outcome.code = RefusalCode::damaged;
   } catch (...) {
     outcome.reason = std::string("face ") + std::to_string(f) + ": internal failure";
-    outcome.internal = true;
+    outcome.code = RefusalCode::internal;
   }
   return outcome;
 }

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/face_refusal.h"
 #include "occ/edge_discretization.h"
 #include "occ/face_boundary.h"
 #include "occ/face_mesher.h"
@@ -18,9 +19,10 @@ struct FaceOutcome {
   bool ok = false;
   // Refused for quads that stay inverted on a small mesh: finer edges may help.
   bool finer_edges_may_help = false;
-  // Refused for a failure of the mesher itself (a broken invariant, out of memory),
-  // not of the input: exit 1, not 2, when it stops the job.
-  bool internal = false;
+  // Why it was refused; RefusalCode::internal is a failure of the mesher itself (a
+  // broken invariant, out of memory), not of the input: exit 1, not 2, when it stops
+  // the job.
+  RefusalCode code = RefusalCode::cannot_mesh;
   std::string reason;
   FaceBoundary boundary;
   FaceMeshResult mesh;

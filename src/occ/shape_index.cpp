@@ -1,7 +1,11 @@
 #include "occ/shape_index.h"
 
+#include <BRepTools.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Wire.hxx>
 
 #include <algorithm>
 
@@ -29,5 +33,20 @@ ShapeIndex::ShapeIndex(const TopoDS_Shape& shape) {
 const TopoDS_Face& ShapeIndex::face(int i) const { return TopoDS::Face(faces_(i + 1)); }
 const TopoDS_Edge& ShapeIndex::edge(int i) const { return TopoDS::Edge(edges_(i + 1)); }
 const TopoDS_Vertex& ShapeIndex::vertex(int i) const { return TopoDS::Vertex(vertices_(i + 1)); }
+
+std::vector<int> ShapeIndex::outer_wire_vertices(int i) const {
+  std::vector<int> out;
+  try {
+    const TopoDS_Wire wire = BRepTools::OuterWire(face(i));
+    if (wire.IsNull()) return out;
+    for (BRepTools_WireExplorer it(wire, face(i)); it.More(); it.Next()) {
+      const int v = vertex_index(it.CurrentVertex());
+      if (v >= 0 && std::find(out.begin(), out.end(), v) == out.end()) out.push_back(v);
+    }
+  } catch (const Standard_Failure&) {  // a damaged wire: the refusal names the face alone
+    out.clear();
+  }
+  return out;
+}
 
 }  // namespace tquad

@@ -33,6 +33,10 @@ class ShapeIndex {
   // Indices of the distinct faces an edge bounds (a seam edge bounds its face once).
   const std::vector<int>& faces_of_edge(int edge) const { return faces_of_edge_[edge]; }
 
+  // The distinct vertices of face i's outer wire, in the wire's order (what a user picks
+  // corners from); empty when the face has no readable outer wire (a damaged face).
+  std::vector<int> outer_wire_vertices(int i) const;
+
  private:
   TopTools_IndexedMapOfShape faces_, edges_, vertices_;
   std::vector<std::vector<int>> faces_of_edge_;

@@ -211,7 +211,7 @@ class ShapeMeshContext {
   void index_faces() {
     meshed_ = meshed_faces(index_, options_.faces);
     const double diagonal = shape_diagonal(shape_);  // checked even when the size is given
-    result_.size = options_.size > 0 ? options_.size : diagonal / 25.0;
+    result_.size = std::max(options_.size > 0 ? options_.size : diagonal / 25.0, options_.min_size);
     // Damaged faces (the reader's check, or an edge whose curve cannot be evaluated)
     // are refused before anything else looks at them; the rest is meshed without them.
     damaged_ = options_.damaged_faces;
@@ -320,6 +320,7 @@ class ShapeMeshContext {
       const auto damaged = damaged_.find(f);
       if (damaged != damaged_.end()) {
         outcomes_[f].reason = "face " + std::to_string(f) + ": " + damaged->second;
+        outcomes_[f].code = RefusalCode::damaged;
       } else {
         if (reuse_unchanged_face(index_, f, previous_edges_, previous_nodes_, edges_, result_.mesh.nodes, previous[f])) {
           outcomes_[f] = std::move(previous[f]);
@@ -356,18 +357,19 @@ class ShapeMeshContext {
   void assemble() {
     ShapeMesh& mesh = result_.mesh;
     for (int f = 0; f < index_.face_count(); ++f) {
-      if (meshed_[f] && !outcomes_[f].ok) mesh.refused_faces.push_back({f, outcomes_[f].reason});
+      if (meshed_[f] && !outcomes_[f].ok) {
+        mesh.refused_faces.push_back({f, outcomes_[f].reason, outcomes_[f].code, index_.outer_wire_vertices(f)});
+      }
     }
     if (!mesh.refused_faces.empty() && !options_.keep_going) {
       std::string text = std::to_string(mesh.refused_faces.size()) + " face(s) refused: ";
       bool internal = false;
       for (std::size_t i = 0; i < mesh.refused_faces.size(); ++i) {
         text += (i ? "; " : "") + mesh.refused_faces[i].reason;
-        internal = internal || outcomes_[mesh.refused_faces[i].face].internal;
+        internal = internal || mesh.refused_faces[i].code == RefusalCode::internal;
       }
-      text += " (--keep-going meshes the other faces)";
       if (internal) throw std::runtime_error(text);  // the mesher's fault: exit 1
-      throw InputError(text);
+      throw FacesRefusedError(text, mesh.refused_faces);
     }
     if (!mesh.refused_faces.empty() &&
         static_cast<std::size_t>(std::count(meshed_.begin(), meshed_.end(), 1)) == mesh.refused_faces.size()) {

@@ -20,8 +20,10 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "core/input_error.h"
 #include "core/mesher.h"
 #include "core/shape_mesh.h"
 #include "occ/interval_assignment.h"
@@ -43,9 +45,25 @@ class MeshCancelled : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Faces refused while keep_going is off: the job stops (exit 2, ValueError). The
+// message lists the faces' reasons; each front end adds how to mesh the others
+// (--keep-going, keep_going=True), and can read the records themselves.
+class FacesRefusedError : public InputError {
+ public:
+  FacesRefusedError(const std::string& message, std::vector<RefusedFace> refused)
+      : InputError(message), refused_(std::move(refused)) {}
+  const std::vector<RefusedFace>& refused() const { return refused_; }
+
+ private:
+  std::vector<RefusedFace> refused_;
+};
+
 struct ShapeMeshOptions {
   // Target edge length; <= 0 uses the shape's bounding-box diagonal / 25.
   double size = 0.0;
+  // The target edge length never goes below it (0: no floor), whether given or
+  // automatic; curvature and short edges may still give shorter segments.
+  double min_size = 0.0;
   // Faces to mesh (0-based); empty: all.
   std::vector<int> faces;
   // Per face, the shape vertices to use as corners (2 to 4).

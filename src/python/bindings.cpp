@@ -56,6 +56,16 @@ py::array_t<double> numpy_copy(const std::vector<double>& values) {
   return out;
 }
 
+// One refused face as the Python module documents it (tquad/__init__.py, Mesh).
+py::dict refused_face_dict(const RefusedFace& f) {
+  py::dict d;
+  d["face"] = f.face;
+  d["code"] = refusal_code_name(f.code);
+  d["reason"] = f.reason;
+  d["vertices"] = f.vertices;
+  return d;
+}
+
 // The mesh as plain Python data: numpy arrays for nodes and quads (copied once).
 py::dict mesh_dict(const ShapeMesh& mesh, const QualitySummary& quality) {
   py::array_t<double> nodes({static_cast<py::ssize_t>(mesh.nodes.size()), py::ssize_t{3}});
@@ -91,12 +101,7 @@ py::dict mesh_dict(const ShapeMesh& mesh, const QualitySummary& quality) {
     }
     faces.append(d);
   }
-  for (const RefusedFace& f : mesh.refused_faces) {
-    py::dict d;
-    d["face"] = f.face;
-    d["reason"] = f.reason;
-    refused.append(d);
-  }
+  for (const RefusedFace& f : mesh.refused_faces) refused.append(refused_face_dict(f));
   py::dict out;
   out["nodes"] = nodes;
   out["quads"] = quads;
@@ -154,7 +159,7 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
                             const std::map<int, std::vector<int>>& corners, bool keep_going,
                             bool allow_inverted, int threads, int t4_ratio, int t5_cut_edges,
                             long long max_quads, bool smooth, const py::object& progress,
-                            double read_timeout, bool best_corners) {
+                            double read_timeout, bool best_corners, double min_size) {
   ShapeMeshOptions options;
   options.smooth = smooth;
   options.best_corners = best_corners;
@@ -177,6 +182,7 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
     };
   }
   options.size = size;
+  options.min_size = min_size;
   options.faces = faces;
   options.corners = corners;
   options.keep_going = keep_going;
@@ -185,6 +191,12 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
   options.templates = template_options(t4_ratio, t5_cut_edges, max_quads);
   if (!(size >= 0) || !std::isfinite(size)) {
     throw InputError("size must be a finite positive number (or 0 for the default), not " + std::to_string(size));
+  }
+  if (!(min_size >= 0) || !std::isfinite(min_size)) {
+    throw InputError("min_size must be a finite number of 0 (no floor) or more, not " + std::to_string(min_size));
+  }
+  if (size > 0 && min_size > size) {
+    throw InputError("min_size (" + std::to_string(min_size) + ") is larger than size (" + std::to_string(size) + ")");
   }
   if (!(read_timeout >= kMinReadSeconds && read_timeout <= kMaxReadSeconds)) {
     throw InputError("read_timeout must be between 0.001 and 1e6 seconds, not " + std::to_string(read_timeout));
@@ -245,11 +257,26 @@ PYBIND11_MODULE(_core, m) {
   py::register_exception<tquad::InputError>(m, "InputError", PyExc_ValueError);
   // Cancelled from the progress callback: nothing is returned.
   py::register_exception<tquad::MeshCancelled>(m, "Cancelled", PyExc_RuntimeError);
+  // Faces refused without keep_going: a ValueError that also carries the records, as
+  // Mesh.refused_faces would list them (translators registered later are tried first).
+  static py::exception<tquad::FacesRefusedError> faces_refused(m, "FacesRefused", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const tquad::FacesRefusedError& e) {
+      py::list records;
+      for (const tquad::RefusedFace& f : e.refused()) records.append(tquad::refused_face_dict(f));
+      const py::object error =
+          py::handle(faces_refused.ptr())(std::string(e.what()) + " (keep_going=True meshes the other faces)");
+      error.attr("refused_faces") = records;
+      PyErr_SetObject(faces_refused.ptr(), error.ptr());
+    }
+  });
   m.def("mesh_boundary", &tquad::mesh_boundary_binding, py::arg("points"), py::arg("corners"),
         py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("smooth"),
         py::arg("best_corners"));
   m.def("mesh_shape", &tquad::mesh_shape_binding, py::arg("brep_text_or_path"), py::arg("size"),
         py::arg("faces"), py::arg("corners"), py::arg("keep_going"), py::arg("allow_inverted"),
         py::arg("threads"), py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("smooth"),
-        py::arg("progress"), py::arg("read_timeout"), py::arg("best_corners"));
+        py::arg("progress"), py::arg("read_timeout"), py::arg("best_corners"), py::arg("min_size"));
 }

@@ -132,7 +132,7 @@ TEST(InpWriter, LinesFitCalculixAndEmptyFacesGetNoBlock) {
   ShapeMesh mesh = two_face_mesh();
   mesh.nodes[7] = {-1.0000000000000002e-300, 1.2345678901234567e+300, -0.1};  // longest numbers
   mesh.faces.insert(mesh.faces.begin() + 1, FaceMesh{9, "T0", 4, 0, std::nullopt});
-  mesh.refused_faces.push_back({11, std::string(400, 'x') + "\nsecond line"});
+  mesh.refused_faces.push_back({11, std::string(400, 'x') + "\nsecond line", RefusalCode::damaged, {}});
   const std::string text = write_to_string(write_inp, mesh);
   for (const std::string& line : split_lines(text)) EXPECT_LE(line.size(), 132u) << line;
   EXPECT_EQ(text.find("FACE9"), std::string::npos) << text;
@@ -351,7 +351,8 @@ TEST(ReportJson, FacesAndRefusedFaces) {
   EXPECT_EQ(report["quads"], 8);
   EXPECT_EQ(report["faces"].dump(),
             R"([{"face":3,"template_tree":"T0"},{"face":7,"template_tree":"T1[T0,T0,T0,T0]"}])");
-  EXPECT_EQ(report["refused_faces"].dump(), R"([{"face":5,"reason":"the face has no corners"}])");
+  EXPECT_EQ(report["refused_faces"].dump(),
+            R"([{"face":5,"code":"cannot_mesh","reason":"the face has no corners","vertices":[2,4,6]}])");
 }
 
 // ---------------------------------------------------------------- checks

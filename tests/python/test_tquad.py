@@ -125,6 +125,30 @@ class MeshShapeTest(unittest.TestCase):
         # Still alive, and still meshing.
         self.assertGreater(len(tquad.mesh_shape(os.path.join(SHAPES, "plate_with_hole.step")).quads), 0)
 
+    def test_refused_faces_are_records_with_a_code_and_the_face_vertices(self):
+        # One byte of a plane's origin damaged (as in bad_input_matrix.py): face 0 of
+        # the bracket is invalid, the other eight mesh.
+        with open(os.path.join(SHAPES, "filleted_bracket.brep")) as f:
+            text = f.read()
+        self.assertIn("\nSurfaces 8\n1 ", text)
+        damaged = text.replace("\nSurfaces 8\n1 ", "\nSurfaces 8\n1 0\xef", 1)
+        with self.assertRaises(tquad.FacesRefused) as caught:
+            tquad.mesh_shape(damaged)
+        error = caught.exception
+        self.assertIsInstance(error, ValueError, "FacesRefused is a ValueError")
+        self.assertIn("keep_going=True meshes the other faces", str(error), "Python's advice")
+        self.assertNotIn("--keep-going", str(error), "not the command line's")
+        self.assertEqual([(r["face"], r["code"]) for r in error.refused_faces], [(0, "damaged")])
+        m = tquad.mesh_shape(damaged, keep_going=True)
+        self.assertEqual(m.refused_faces, error.refused_faces, "the same records either way")
+        record = m.refused_faces[0]
+        self.assertIn(record["code"], tquad.REFUSAL_CODES)
+        self.assertTrue(record["reason"].startswith("face 0: "), record["reason"])
+        self.assertEqual(len(m.faces), 8, "the other faces are meshed")
+        # Face 0 is a four-sided end face: its outer wire runs through four distinct
+        # shape vertices, the first four of the file.
+        self.assertEqual(sorted(record["vertices"]), [0, 1, 2, 3], record["vertices"])
+
     def test_progress_reports_stages_and_can_cancel(self):
         path = os.path.join(SHAPES, "filleted_bracket.brep")
         seen = []

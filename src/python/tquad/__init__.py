@@ -17,7 +17,21 @@ from . import _core
 #: Raised when mesh_shape's progress callback asks to stop.
 Cancelled = _core.Cancelled
 
-__all__ = ["Cancelled", "Mesh", "mesh_boundary", "mesh_shape"]
+#: A ValueError raised by mesh_shape without keep_going when faces are refused; its
+#: ``refused_faces`` attribute lists them as Mesh.refused_faces would.
+FacesRefused = _core.FacesRefused
+
+#: The ``code`` of a refused face, and what it means.
+REFUSAL_CODES = {
+    "cannot_mesh": "no meshing route gave a valid mesh (the reason says what failed)",
+    "inverted_quads": "every mesh found keeps inverted quads on the surface",
+    "too_coarse": "too few boundary segments; a smaller element size gives it more",
+    "not_supported": "a kind of face the mesher does not handle yet",
+    "damaged": "the face's geometry is invalid",
+    "internal": "the mesher itself failed (a bug)",
+}
+
+__all__ = ["Cancelled", "FacesRefused", "Mesh", "REFUSAL_CODES", "mesh_boundary", "mesh_shape"]
 
 _MAX_QUADS = 100_000_000
 
@@ -33,7 +47,10 @@ class Mesh:
         faces: one dict per meshed face: ``face`` (index in the shape),
             ``template_tree`` (e.g. ``"T2[T0,T0,T1[T0,T0,T0,T0]]"``), ``first_quad``
             and ``quad_count`` (the face's quads are a contiguous range).
-        refused_faces: one dict per face not meshed: ``face`` and ``reason``.
+        refused_faces: one dict per face not meshed: ``face`` (0-based), ``code``
+            (a key of REFUSAL_CODES, to act on without reading the message),
+            ``reason`` (a message naming the face, 0-based) and ``vertices`` (the
+            shape vertices on the face's outer wire, in order, 0-based).
         quality: ``lee_lo`` and ``scaled_jacobian`` (each ``min``, ``avg``,
             ``max``, ``std``), the ``inverted``, ``degenerate`` and ``collapsed``
             quad counts, and ``jacobian_histogram``: 11 counts, the quads below 0,
@@ -125,13 +142,16 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
                t4_ratio: int = 2, t5_cut_edges: int = 0,
                max_quads: int = _MAX_QUADS, smooth: bool = True,
                progress: Optional[Callable[[str, int, int], Optional[bool]]] = None,
-               read_timeout: float = 300.0, best_corners: bool = False) -> Mesh:
+               read_timeout: float = 300.0, best_corners: bool = False,
+               min_size: float = 0.0) -> Mesh:
     """Mesh the faces of a CAD shape, conforming across shared edges.
 
     Args:
         brep_text_or_path: BREP text (FreeCAD's ``Shape.exportBrepToString()``) or
             the path of a .step/.stp, .iges/.igs or .brep file.
         size: target edge length; 0 uses the bounding-box diagonal / 25.
+        min_size: the target edge length never goes below it, given or automatic
+            (0: no floor); curved and short edges may still get shorter segments.
         faces: indices of the faces to mesh (FreeCAD's ``Shape.Faces`` order); None
             meshes all.
         corners: per face index, the shape vertex indices where its curves begin.
@@ -155,12 +175,14 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
 
     Raises:
         Cancelled: the progress callback asked to stop (nothing is returned).
-        ValueError: unreadable shape, bad options, or a refused face without
-            keep_going.
+        FacesRefused: faces refused without keep_going (a ValueError; its
+            ``refused_faces`` lists them).
+        ValueError: unreadable shape or bad options.
     """
     face_list = [int(f) for f in faces] if faces is not None else []
     corner_map: Dict[int, List[int]] = {int(k): [int(v) for v in vs] for k, vs in (corners or {}).items()}
     return Mesh(_core.mesh_shape(str(brep_text_or_path), float(size), face_list, corner_map,
                                  bool(keep_going), bool(allow_inverted), int(threads),
                                  int(t4_ratio), int(t5_cut_edges), int(max_quads), bool(smooth),
-                                 progress, float(read_timeout), bool(best_corners)))
+                                 progress, float(read_timeout), bool(best_corners),
+                                 float(min_size)))

@@ -2,9 +2,13 @@ from typing import Callable, Dict, Iterable, List, Mapping, Optional, Sequence, 
 
 import numpy as np
 
-__all__ = ["Cancelled", "Mesh", "mesh_boundary", "mesh_shape"]
+__all__ = ["Cancelled", "FacesRefused", "Mesh", "REFUSAL_CODES", "mesh_boundary", "mesh_shape"]
 
 class Cancelled(RuntimeError): ...
+class FacesRefused(ValueError):
+    refused_faces: List[dict]
+
+REFUSAL_CODES: Dict[str, str]
 
 class Mesh:
     nodes: np.ndarray
@@ -33,4 +37,5 @@ def mesh_shape(brep_text_or_path: str, *, size: float = ..., faces: Optional[Ite
                allow_inverted: bool = ..., threads: int = ..., t4_ratio: int = ...,
                t5_cut_edges: int = ..., max_quads: int = ..., smooth: bool = ...,
                progress: Optional[Callable[[str, int, int], Optional[bool]]] = ...,
-               read_timeout: float = ...) -> Mesh: ...
+               read_timeout: float = ..., best_corners: bool = ...,
+               min_size: float = ...) -> Mesh: ...

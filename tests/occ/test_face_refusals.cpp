@@ -1,0 +1,85 @@
+// Refused faces come with a code and the face's vertices, so front ends (the FreeCAD
+// workbench above all) act on records instead of parsing messages; without
+// keep_going the job stops with FacesRefusedError carrying the same records.
+#include <gtest/gtest.h>
+
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Compound.hxx>
+#include <gp_Pnt.hxx>
+
+#include <algorithm>
+#include <string>
+
+#include "occ/shape_index.h"
+#include "occ/shape_mesher.h"
+
+namespace tquad {
+namespace {
+
+// A box and, apart from it, a whole sphere: the sphere's face (seam and two poles,
+// no other edge) is one the mesher does not handle; the box's six faces mesh.
+TopoDS_Shape box_and_sphere() {
+  BRep_Builder builder;
+  TopoDS_Compound compound;
+  builder.MakeCompound(compound);
+  builder.Add(compound, BRepPrimAPI_MakeBox(10.0, 10.0, 10.0).Shape());
+  builder.Add(compound, BRepPrimAPI_MakeSphere(gp_Pnt(30.0, 0.0, 0.0), 5.0).Shape());
+  return compound;
+}
+
+int sphere_face(const TopoDS_Shape& shape) {
+  const ShapeIndex index(shape);
+  return index.face_count() - 1;  // added last
+}
+
+TEST(FaceRefusals, KeepGoingListsTheRefusedFaceWithItsCodeAndVertices) {
+  const TopoDS_Shape shape = box_and_sphere();
+  ShapeMeshOptions options;
+  options.keep_going = true;
+  const ShapeMeshResult result = mesh_shape(shape, options);
+  ASSERT_EQ(result.mesh.faces.size(), 6u);
+  ASSERT_EQ(result.mesh.refused_faces.size(), 1u);
+  const RefusedFace& refused = result.mesh.refused_faces[0];
+  EXPECT_EQ(refused.face, sphere_face(shape));
+  EXPECT_EQ(refused.code, RefusalCode::not_supported) << refused.reason;
+  EXPECT_STREQ(refusal_code_name(refused.code), "not_supported");
+  EXPECT_EQ(refused.reason.find("--"), std::string::npos) << "no command-line advice: " << refused.reason;
+  // The sphere's outer wire (seam and poles) passes through its two pole vertices,
+  // which are the last two of the shape (the box has eight before them).
+  const ShapeIndex index(shape);
+  ASSERT_EQ(index.vertex_count(), 10);
+  std::vector<int> vertices = refused.vertices;
+  std::sort(vertices.begin(), vertices.end());
+  EXPECT_EQ(vertices, (std::vector<int>{8, 9}));
+}
+
+TEST(FaceRefusals, WithoutKeepGoingTheErrorCarriesTheRecords) {
+  const TopoDS_Shape shape = box_and_sphere();
+  try {
+    mesh_shape(shape, ShapeMeshOptions{});
+    ADD_FAILURE() << "a refused face did not stop the job";
+  } catch (const FacesRefusedError& e) {
+    ASSERT_EQ(e.refused().size(), 1u);
+    EXPECT_EQ(e.refused()[0].face, sphere_face(shape));
+    EXPECT_EQ(e.refused()[0].code, RefusalCode::not_supported);
+    const std::string message = e.what();
+    EXPECT_NE(message.find("1 face(s) refused"), std::string::npos) << message;
+    EXPECT_EQ(message.find("--keep-going"), std::string::npos) << "each front end words its own advice: " << message;
+  }
+}
+
+TEST(FaceRefusals, EveryCodeHasItsOwnName) {
+  const RefusalCode codes[] = {RefusalCode::cannot_mesh, RefusalCode::inverted_quads, RefusalCode::too_coarse,
+                               RefusalCode::not_supported, RefusalCode::damaged, RefusalCode::internal};
+  std::vector<std::string> names;
+  for (RefusalCode code : codes) names.push_back(refusal_code_name(code));
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(std::adjacent_find(names.begin(), names.end()), names.end());
+}
+
+}  // namespace
+}  // namespace tquad
