@@ -5,8 +5,9 @@
 #   freecad_workbench/install.sh --uninstall          remove it
 #
 # TQUAD_MODULE_DIR is the built Python package `tquad` (default: <repo>/build/python/tquad,
-# made by `cmake --build build --target tquad_python`). It is copied into the add-on
-# folder, which FreeCAD puts on sys.path, so the workbench's `import tquad` finds it.
+# made by `cmake --build build --target tquad_python`). It is copied into the add-on's
+# workbench folder, which FreeCAD puts on sys.path, so the workbench's `import tquad`
+# finds it.
 #
 # Where: FreeCAD 0.20 (Debian) loads user add-ons from <user data>/Mod/<Name>, the user
 # data directory being $FREECAD_USER_HOME when that is set, else
@@ -62,10 +63,12 @@ install() {
   local stage
   stage=$(mktemp -d "$mod_dir/.TemplateQuad.install.XXXXXX")
   trap 'rm -rf "$stage"' EXIT
-  cp -R "$here/package.xml" "$here/freecad" "$here/resources" "$stage/"
-  [[ -f "$here/README.md" ]] && cp "$here/README.md" "$stage/"
-  cp "$here/../LICENSE" "$stage/"  # package.xml names it
-  cp -R "$module" "$stage/tquad"
+  # The repository's layout (paths.py): package.xml and LICENSE at the root, the
+  # workbench folder beside them, the compiled module inside it (on sys.path).
+  cp "$repo/package.xml" "$repo/LICENSE" "$stage/"
+  mkdir "$stage/freecad_workbench"
+  cp -R "$here/freecad" "$here/resources" "$here/README.md" "$stage/freecad_workbench/"
+  cp -R "$module" "$stage/freecad_workbench/tquad"
   find "$stage" -name __pycache__ -type d -prune -exec rm -rf {} +
 
   rm -rf "$target"
@@ -75,7 +78,7 @@ install() {
 
   # FreeCAD embeds Debian's python3: the module must import there (same ABI).
   if [[ -x /usr/bin/python3 ]] && \
-     ! PYTHONPATH="$target" /usr/bin/python3 -c "import tquad" 2>/dev/null; then
+     ! PYTHONPATH="$target/freecad_workbench" /usr/bin/python3 -c "import tquad" 2>/dev/null; then
     echo "warning: /usr/bin/python3 cannot import tquad from $target;" \
          "FreeCAD will report the module as missing (built for another Python?)." >&2
   fi

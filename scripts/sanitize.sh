@@ -12,4 +12,4 @@ cmake --build "$build" --target tquad core_tests occ_tests cli_tests
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export LSAN_OPTIONS="suppressions=$repo_dir/scripts/lsan_suppressions.txt:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-ctest --test-dir "$build" --output-on-failure --timeout 1200 -j "$(nproc)" -E "python_module|freecad_workbench"
+ctest --test-dir "$build" --output-on-failure --timeout 1200 -j "$(nproc)" -E "python_module|freecad_workbench|debian_package"

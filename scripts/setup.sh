@@ -30,6 +30,9 @@ packages=(
   python3-meshio gmsh python3-gmsh calculix-ccx
   # figures: meshes drawn to PNG (tools/draw_mesh.py)
   python3-matplotlib
+  # packaging: cpack -G DEB finds the package's library dependencies with
+  # dpkg-shlibdeps
+  dpkg-dev
   # fuzzing: libFuzzer targets built with clang (scripts/fuzz.sh)
   clang libclang-rt-14-dev
 )

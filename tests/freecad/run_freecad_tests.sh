@@ -22,6 +22,7 @@ if ! command -v freecadcmd >/dev/null 2>&1; then
   exit 0
 fi
 
+mkdir -p "${TQ_SCREENSHOT_DIR:-$repo/docs}" "$(dirname "$screenshot")"
 home=$(mktemp -d "${TMPDIR:-/tmp}/tq_freecad_home.XXXXXX")
 trap 'rm -rf "$home"' EXIT
 
@@ -65,7 +66,7 @@ if command -v freecad >/dev/null 2>&1 && command -v xvfb-run >/dev/null 2>&1; th
   echo "=== test_gui (FreeCAD GUI under Xvfb) ==="
   result="$home/test_gui.json"
   env "${common_env[@]}" TQ_RESULT_FILE="$result" TQ_SCREENSHOT="$screenshot" \
-      QTWEBENGINE_DISABLE_SANDBOX=1 timeout 300 \
+      TQ_SCREENSHOT_DIR="${TQ_SCREENSHOT_DIR:-$repo/docs}" QTWEBENGINE_DISABLE_SANDBOX=1 timeout 300 \
       xvfb-run -a -s "-screen 0 1280x1024x24" freecad "$here/gui_test_macro.py"
   tally test_gui "$result" $?
 else

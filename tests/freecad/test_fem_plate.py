@@ -52,7 +52,7 @@ class PlateWithHoleTest(unittest.TestCase):
         FreeCAD.closeDocument(self.doc.Name)
         shutil.rmtree(self.work_dir, ignore_errors=True)
 
-    def _analysis(self, shape):
+    def _analysis(self, shape, **mesh_options):
         """Plate, analysis, solver, thickness, material, constraints, TemplateQuad mesh."""
         import ObjectsFem
         from freecad.templatequad import make_mesh
@@ -84,7 +84,7 @@ class PlateWithHoleTest(unittest.TestCase):
         force.Direction = (plate, [bottom])  # the y = 0 edge runs along x
         analysis.addObject(force)
 
-        mesh = make_mesh(self.doc, plate, size=MESH_SIZE)
+        mesh = make_mesh(self.doc, plate, size=MESH_SIZE, **mesh_options)
         analysis.addObject(mesh)
         self.doc.recompute()
         if force.DirectionVector.x < 0:  # the edge's orientation decides the sign
@@ -134,6 +134,33 @@ class PlateWithHoleTest(unittest.TestCase):
         self.assertGreater(tip, solid, "softer than a solid plate")
         self.assertLess(tip, narrow, "stiffer than the net section all along")
         self.assertLess(to_hole, 1e-3, "the peak stress sits on a hole edge")
+
+    def test_a_mesh_with_a_refused_face_stops_the_solver(self):
+        """A face the mesher refuses (a whole sphere) beside the plate: with KeepGoing
+        the plate is meshed, and both CalculiX checks (ccxtools' prerequisites and the
+        solver object's Check task) stop, naming the face, until AcceptIncomplete."""
+        from femtools import ccxtools, checksanalysis, membertools
+
+        sphere = Part.makeSphere(5, FreeCAD.Vector(50, 300, 0))
+        shape = Part.makeCompound([Part.makePlane(100, WIDTH), sphere.Faces[0]])
+        analysis, solver, mesh = self._analysis(shape, keep_going=True)
+        self.assertTrue(mesh.Incomplete)
+        self.assertEqual(list(mesh.RefusedFaceNames), ["Face2"])
+        fea = ccxtools.FemToolsCcx(analysis, solver)
+        fea.update_objects()
+        fea.setup_working_dir(self.work_dir)
+        message = fea.check_prerequisites()
+        self.assertIn(f"The mesh {mesh.Label} is incomplete: Face2 of Plate", message)
+        self.assertIn("AcceptIncomplete", message, "says how to go on anyway")
+        task_message = checksanalysis.check_member_for_solver_calculix(
+            analysis, solver, membertools.get_mesh_to_solve(analysis)[0],
+            membertools.AnalysisMember(analysis))
+        self.assertIn("Face2", task_message, "the solver object's Check task stops too")
+        self.assertFalse(fea.run(), "ccxtools' run stops before writing the input or solving")
+        self.assertEqual([f for f in os.listdir(fea.working_dir) if f.endswith(".inp")], [],
+                         "no CalculiX input was written")
+        mesh.AcceptIncomplete = True
+        self.assertEqual(fea.check_prerequisites(), "", "accepted by the user: no stop")
 
     def _solve(self, shape):
         """Meshes, solves with CalculiX, returns (mesh object, result object)."""

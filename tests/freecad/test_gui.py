@@ -107,21 +107,179 @@ class WorkbenchGuiTest(unittest.TestCase):
         mesh = make_mesh(self.doc, self._filleted_box(), size=4.0)
         before = mesh.FemMesh.FaceCount
         panel = TemplateQuadTaskPanel(mesh)
-        self.assertIn(f"{before} quads", panel.status.text(), "panel shows the count")
-        panel.size.setValue(2.0)
+        self.assertIn(f"{before} quads on all faces", panel.summary.text(), "panel shows the count")
+        self.assertIn("element size 4 mm", panel.summary.text(), "and the size used")
+        panel.max_size.setValue(2.0)
         self.assertTrue(panel.apply(), "apply must re-mesh without error")
         self.assertGreater(mesh.FemMesh.FaceCount, before, "smaller size, more quads")
-        self.assertIn(f"{mesh.FemMesh.FaceCount} quads", panel.status.text(), "updated")
+        self.assertIn(f"{mesh.FemMesh.FaceCount} quads", panel.summary.text(), "updated")
         panel.reject()
-        self.assertEqual(mesh.Size.Value, 4.0, "cancel restores the size")
+        self.assertEqual(mesh.CharacteristicLengthMax.Value, 4.0, "cancel restores the size")
         self.assertEqual(mesh.FemMesh.FaceCount, before, "cancel restores the mesh")
 
         panel = TemplateQuadTaskPanel(mesh)
         panel.corners.setPlainText("Face1:Vertex1")
         self.assertFalse(panel.apply(), "a bad corner entry must fail")
-        self.assertIn("Not meshed", panel.status.text(), "the panel shows the error")
+        self.assertIn("Not meshed", panel.summary.text(), "the panel shows the error")
+        self.assertNotIn("--", panel.summary.text(), "no command-line option in the panel")
         panel.reject()
         self.assertEqual(mesh.FemMesh.FaceCount, before, "cancel re-meshes the old values")
+
+    def test_apply_then_ok_meshes_once(self):
+        from freecad.templatequad import make_mesh
+        from freecad.templatequad.task_panel import TemplateQuadTaskPanel
+
+        from freecad.templatequad import meshing
+
+        mesh = make_mesh(self.doc, self._filleted_box(), size=4.0)
+        runs = []
+        mesh_shape = meshing.mesh_shape
+        meshing.mesh_shape = lambda *a, **k: (runs.append(1), mesh_shape(*a, **k))[1]
+        try:
+            gui_doc = FreeCADGui.getDocument(self.doc.Name)
+            gui_doc.setEdit(mesh.Name)
+            panel = TemplateQuadTaskPanel(mesh)
+            panel.max_size.setValue(3.0)
+            self.assertTrue(panel.apply())
+            self.assertTrue(panel.accept())
+            self.assertEqual(len(runs), 1, "Apply then OK with the same values: one mesh")
+        finally:
+            meshing.mesh_shape = mesh_shape
+
+    def test_cancelled_long_run_leaves_the_document_as_it_was(self):
+        """A 1.5 million quad mesh, cancelled from its progress dialog: through the
+        command no object is added; through the panel the old values and mesh stay."""
+        from freecad.templatequad.task_panel import TemplateQuadTaskPanel
+
+        part = self.doc.addObject("Part::Box", "BigBox")
+        part.Length = part.Width = part.Height = 100
+        self.doc.recompute()
+        names = sorted(o.Name for o in self.doc.Objects)
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(self.doc.Name, part.Name)
+        screenshot = self._screenshot_path("freecad_cancelled.png")
+        seen = self._cancel_progress_dialog_after(450, screenshot)
+        # The command meshes at the automatic size (a few thousand quads, too quick to
+        # cancel); here its make_mesh asks for 1.5 million instead.
+        import freecad.templatequad.factory as factory
+        make_mesh = factory.make_mesh
+        factory.make_mesh = lambda *a, **k: make_mesh(*a, **dict(k, size=0.2))
+        try:
+            FreeCADGui.runCommand(COMMAND)
+            _process_events()
+        finally:
+            factory.make_mesh = make_mesh
+        self.assertTrue(seen, "the progress dialog was shown and cancelled")
+        self.assertEqual(sorted(o.Name for o in self.doc.Objects), names,
+                         "a cancelled new mesh leaves no object behind")
+        self.assertTrue(part.ViewObject.Visibility, "and the part is still shown")
+
+        mesh = factory.make_mesh(self.doc, part, size=20.0)
+        before = mesh.FemMesh.FaceCount
+        panel = TemplateQuadTaskPanel(mesh)
+        panel.max_size.setValue(0.2)
+        seen = self._cancel_progress_dialog_after(450)
+        self.assertFalse(panel.apply(), "a cancelled apply is not a mesh")
+        self.assertTrue(seen, "the progress dialog was shown and cancelled")
+        self.assertEqual(mesh.CharacteristicLengthMax.Value, 20.0, "the size is restored")
+        self.assertEqual(panel.max_size.value(), 20.0, "in the panel too")
+        self.assertEqual(mesh.FemMesh.FaceCount, before, "the previous mesh is kept")
+        self.assertNotIn("Touched", mesh.State, "nothing left to recompute")
+        self.assertIn("Cancelled", panel.summary.text())
+
+    def test_large_meshes_are_drawn_without_their_edges(self):
+        from freecad.templatequad import make_mesh
+        from freecad.templatequad.view_provider import LARGE_MESH_QUADS
+
+        part = self.doc.addObject("Part::Box", "Box")
+        part.Length = part.Width = part.Height = 100
+        self.doc.recompute()
+        mesh = make_mesh(self.doc, part, size=25.0)
+        self.assertEqual(mesh.ViewObject.DisplayMode, "Faces & Wireframe", "small: edges shown")
+        mesh.CharacteristicLengthMax = 0.5
+        self.doc.recompute()
+        self.assertGreater(mesh.FemMesh.FaceCount, LARGE_MESH_QUADS)
+        self.assertEqual(mesh.ViewObject.DisplayMode, "Faces", "large: faces only")
+
+    def test_a_real_part_meshed_with_the_defaults(self):
+        """A part from another CAD system, one click with the default settings: every
+        face meshed, the part hidden, the panel readable at its default width; and the
+        quality colour map. Screenshots go to docs/ (when TQ_SCREENSHOT_DIR is set)."""
+        path = os.path.join(os.environ["TQ_TEST_DIR"], os.pardir, os.pardir, os.pardir,
+                            "shared", "data", "cad", "918_pump_carter_sup_21_03_2006.stp")
+        if not os.path.isfile(path):
+            self.skipTest(f"{path} is not on this machine")
+        part = self.doc.addObject("Part::Feature", "Pump")
+        part.Shape = Part.read(path)
+        self.doc.recompute()
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(self.doc.Name, part.Name)
+        FreeCADGui.runCommand(COMMAND)
+        _process_events()
+        mesh = self._mesh_objects()[0]
+        self.assertFalse(mesh.Incomplete, list(mesh.RefusedFaces))
+        self.assertEqual(len(mesh.TemplateTrees), len(part.Shape.Faces), "every face meshed")
+        self.assertFalse(part.ViewObject.Visibility, "the part is hidden behind its mesh")
+        panel = FreeCADGui.Control.activeDialog() and self._panel_widget()
+        self._save_view("freecad_part.png")
+        if panel is not None:
+            self._save_widget(panel, "freecad_task_panel.png")
+        from freecad.templatequad.view_provider import show_quality
+        # (FreeCAD 0.20 cannot read ElementColor back: the picture is the check.)
+        self.assertTrue(show_quality(mesh.ViewObject, True), "colours from the last mesh")
+        _process_events()
+        self._save_view("freecad_quality_map.png")
+        self.assertTrue(show_quality(mesh.ViewObject, False))
+
+    # --- helpers ----------------------------------------------------------------------
+    def _cancel_progress_dialog_after(self, milliseconds, screenshot=None):
+        """Press Cancel on the progress dialog once it is up; returns a list that gets
+        True when it was found."""
+        from PySide import QtCore
+        seen = []
+
+        def cancel():
+            dialogs = [w for w in QtGui.QApplication.topLevelWidgets()
+                       if isinstance(w, QtGui.QProgressDialog) and w.isVisible()]
+            if not dialogs:
+                QtCore.QTimer.singleShot(100, cancel)
+                return
+            if screenshot:  # the whole screen: the dialog is a window of its own
+                QtGui.QApplication.primaryScreen().grabWindow(0).save(screenshot)
+            dialogs[0].cancel()
+            seen.append(True)
+
+        QtCore.QTimer.singleShot(milliseconds, cancel)
+        return seen
+
+    def _panel_widget(self):
+        main = FreeCADGui.getMainWindow()
+        for dock in main.findChildren(QtGui.QDockWidget):
+            if dock.objectName() == "Combo View" and dock.isVisible():
+                return dock
+        return None
+
+    def _screenshot_path(self, name):
+        folder = os.environ.get("TQ_SCREENSHOT_DIR")
+        return os.path.join(folder, name) if folder else None
+
+    def _save_view(self, name):
+        path = self._screenshot_path(name)
+        if not path:
+            return
+        view = FreeCADGui.getDocument(self.doc.Name).ActiveView
+        view.viewIsometric()
+        view.fitAll()
+        _process_events()
+        view.saveImage(path, 1280, 960, "White")
+        self.assertTrue(os.path.getsize(path) > 10000, f"screenshot {path} not written")
+
+    def _save_widget(self, widget, name):
+        path = self._screenshot_path(name)
+        if not path:
+            return
+        _process_events()
+        self.assertTrue(widget.grab().save(path), f"screenshot {path} not written")
 
     def test_double_click_opens_the_panel_and_a_saved_file_restores_the_gui(self):
         import tempfile

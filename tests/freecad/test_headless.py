@@ -51,6 +51,11 @@ class AddonInstallTest(unittest.TestCase):
                          "one workbench entry with the workbench class name")
         icon = os.path.join(os.path.dirname(path), workbenches[0].Icon)
         self.assertTrue(os.path.isfile(icon), f"workbench icon {icon} missing")
+        self.assertTrue(os.path.isfile(os.path.join(os.path.dirname(path), meta.Icon)), "package icon")
+        self.assertEqual(workbenches[0].Subdirectory, "freecad_workbench", "the workbench folder")
+        self.assertIn("FEM", [d["package"] for d in workbenches[0].Depend], "depends on FEM")
+        repo_xml = os.path.join(os.environ["TQ_TEST_DIR"], os.pardir, os.pardir, "package.xml")
+        self.assertTrue(os.path.isfile(repo_xml), "package.xml sits at the repository root")
 
 
 class CornerParsingTest(unittest.TestCase):
@@ -67,6 +72,27 @@ class CornerParsingTest(unittest.TestCase):
             entries = [bad, "Face1:1,2"] if bad == "Face1:1,2" else [bad]
             with self.assertRaises(ValueError, msg=f"'{bad}' should be refused"):
                 meshing.parse_corners(entries)
+
+
+class QualityColoursTest(unittest.TestCase):
+    """The colour map's scale: red at 0.2 and below, yellow at 0.6, green at 1."""
+
+    def test_scale_and_element_ids(self):
+        from freecad.templatequad import quality_colours as qc
+        self.assertEqual(qc.quality_colour(-0.3), qc.INVERTED)
+        self.assertEqual(qc.quality_colour(0.0), qc.quality_colour(0.2), "red below 0.2")
+        red, yellow, green = qc.quality_colour(0.2), qc.quality_colour(0.6), qc.quality_colour(1.0)
+        self.assertGreater(red[0], 0.8)
+        self.assertLess(red[1], 0.1)
+        self.assertGreater(min(yellow[:2]), 0.8)
+        self.assertGreater(green[1], 0.5)
+        self.assertLess(green[0], 0.1)
+        greens = [qc.quality_colour(v / 100)[1] for v in range(20, 61)]
+        self.assertEqual(greens, sorted(greens), "red to yellow: green rises")
+        colours = qc.element_colours([1.0, 0.1])
+        self.assertEqual(sorted(colours), [1, 2], "FemMesh element ids start at 1")
+        self.assertEqual(colours[2], red)
+        self.assertEqual(len(qc.HISTOGRAM_LABELS), 11, "as tquad's jacobian_histogram")
 
 
 class MeshObjectTest(unittest.TestCase):
@@ -194,10 +220,11 @@ class MeshObjectTest(unittest.TestCase):
         part = self._part(self._filleted_box(), "FilletedBox")
         mesh = make_mesh(self.doc, part, size=4.0)
         coarse = mesh.FemMesh.FaceCount
-        mesh.Size = 2.0
+        mesh.CharacteristicLengthMax = 2.0
         self.doc.recompute()
         fine = mesh.FemMesh.FaceCount
-        self.assertGreater(fine, coarse, "a smaller Size must give more elements")
+        self.assertGreater(fine, coarse, "a smaller size must give more elements")
+        self.assertAlmostEqual(mesh.ElementSizeUsed.Value, 2.0, 9, "the size used is shown")
         self._assert_same_as_tquad(mesh, part.Shape, 2.0)
 
     def test_part_change_propagates(self):
@@ -244,14 +271,68 @@ class MeshObjectTest(unittest.TestCase):
         part = self._part(Part.makeCompound(sphere.Faces + [square]), "SphereAndSquare")
         with self.assertRaises(ValueError, msg="a refused face without KeepGoing") as caught:
             make_mesh(self.doc, part, size=5.0)
-        self.assertIn("Face1", str(caught.exception), "the error maps tquad's face 0")
+        error = str(caught.exception)
+        self.assertIn("Face1", error, "the error maps tquad's face 0")
+        self.assertIn("not supported", error, "the refusal's code is worded")
+        self.assertIn("KeepGoing", error, "says which property meshes the rest")
+        self.assertNotIn("--", error, "no command-line option in a FreeCAD message")
         mesh = make_mesh(self.doc, part, size=5.0, keep_going=True)
+        self.assertEqual(list(mesh.RefusedFaceNames), ["Face1"], "the refused face, by name")
+        self.assertTrue(mesh.Incomplete, "a mesh with a refused face is incomplete")
         self.assertEqual(len(mesh.RefusedFaces), 1, "one refused face")
-        self.assertTrue(mesh.RefusedFaces[0].startswith("Face1: "), mesh.RefusedFaces[0])
-        self.assertGreater(len(mesh.RefusedFaces[0]), len("Face1: "), "the reason is kept")
+        self.assertTrue(mesh.RefusedFaces[0].startswith("Face1: this kind of face is not supported"),
+                        mesh.RefusedFaces[0])
+        self.assertNotIn("face 0", mesh.RefusedFaces[0], "tquad's 0-based name is not shown")
         self.assertEqual([t.split(":")[0] for t in mesh.TemplateTrees], ["Face2"],
                          "the other face is meshed")
         self.assertEqual(mesh.FemMesh.FaceCount, 16, "20 x 20 square at size 5")
+        mesh.Faces = ["Face2"]
+        self.doc.recompute()
+        self.assertFalse(mesh.Incomplete, "only the meshable face asked for: complete")
+        self.assertEqual(list(mesh.RefusedFaceNames), [])
+
+    def test_freecad_wording_of_tquad_messages(self):
+        from freecad.templatequad import meshing
+        cases = {
+            "face 27: vertices 41, 42 and 7 are not on it; use a smaller --size":
+                "Face28: Vertex42, Vertex43 and Vertex8 are not on it; use a smaller element size",
+            "--corners: vertex 4 is not on the outer wire of face 2":
+                "Corners: Vertex5 is not on the outer wire of Face3",
+            "at least 5 quads, over the limit of 100 (--max-quads); use a larger --size":
+                "at least 5 quads, over the limit of 100; use a larger element size",
+            "edge 0: failed (a damaged curve?); node 5":
+                "Edge1: failed (a damaged curve?); node 5",
+            "1 face(s) refused: face 3: x (--keep-going meshes the other faces)":
+                "1 face(s) refused: Face4: x",
+        }
+        for tquad_text, freecad_text in cases.items():
+            self.assertEqual(meshing.freecad_wording(tquad_text), freecad_text)
+
+    def test_size_floor_and_element_order(self):
+        from freecad.templatequad import make_mesh
+        part = self._part(Part.makeBox(10, 20, 30), "Box")
+        mesh = make_mesh(self.doc, part, min_size=8.0)
+        self.assertAlmostEqual(mesh.ElementSizeUsed.Value, 8.0, 9,
+                               "the automatic size (diagonal / 25 = 1.5) is raised to the minimum")
+        self._assert_same_as_tquad(mesh, part.Shape, 8.0)
+        self.assertEqual(mesh.ElementOrder, "1st")
+        self.assertEqual(list(mesh.getEnumerationsOfProperty("ElementOrder")), ["1st"],
+                         "no order is offered that the engine cannot make")
+        with self.assertRaises(ValueError) as caught:
+            make_mesh(self.doc, part, size=2.0, min_size=3.0)
+        self.assertIn("minimum element size (3 mm) is larger than the maximum (2 mm)",
+                      str(caught.exception))
+
+    def test_files_saved_with_the_old_size_property_keep_their_size(self):
+        from freecad.templatequad import make_mesh
+        part = self._part(Part.makeBox(10, 20, 30), "Box")
+        mesh = make_mesh(self.doc, part, size=2.0)
+        mesh.addProperty("App::PropertyLength", "Size", "TemplateQuad", "the old name")
+        mesh.Size = 3.5
+        mesh.CharacteristicLengthMax = 0.0
+        mesh.Proxy.onDocumentRestored(mesh)
+        self.assertNotIn("Size", mesh.PropertiesList, "the old property is removed")
+        self.assertEqual(mesh.CharacteristicLengthMax.Value, 3.5, "its value is kept")
 
     def test_bad_corners_fail_loudly_and_leave_no_stale_mesh(self):
         from freecad.templatequad import make_mesh
@@ -303,7 +384,7 @@ class MeshObjectTest(unittest.TestCase):
         self.doc = FreeCAD.openDocument(path)
         mesh = self.doc.getObject(name)
         self.assertEqual(mesh.Proxy.Type, "TemplateQuad::Mesh", "proxy restored")
-        self.assertEqual((mesh.T4Ratio, mesh.KeepGoing, mesh.Size.Value), (3, True, 4.0),
+        self.assertEqual((mesh.T4Ratio, mesh.KeepGoing, mesh.CharacteristicLengthMax.Value), (3, True, 4.0),
                          "inputs restored")
         self.assertEqual(mesh.FemMesh.FaceCount, count, "saved mesh restored")
         mesh.touch()

@@ -71,8 +71,11 @@ class MeshCommand:
         doc.openTransaction("Template quad mesh")
         try:
             # No raise: a refused mesh still gets its object and task panel, where the
-            # user sees why and can set corners or keep-going.
+            # user sees why and can change the size or corners.
             mesh = make_mesh(doc, part, faces=faces, raise_on_error=False)
+            if mesh is None:  # cancelled in the progress dialog: nothing was added
+                doc.abortTransaction()
+                return
             analysis = active_analysis(doc)
             if analysis is not None:
                 analysis.addObject(mesh)
@@ -80,10 +83,23 @@ class MeshCommand:
             doc.abortTransaction()
             raise
         doc.commitTransaction()
-        # The mesh lies on the part's faces; hide the part so the mesh is seen.
-        part.ViewObject.Visibility = False
-        FreeCADGui.Selection.clearSelection()
+        show_mesh_over_part(mesh, part)
         FreeCADGui.getDocument(doc).setEdit(mesh.Name)
+
+
+def show_mesh_over_part(mesh, part) -> None:
+    """Hide the part where the mesh covers it whole; else show which faces are missing.
+
+    The mesh lies on the part's faces, so both visible is a muddle. When every face
+    was meshed the part is hidden; when only some were (selected faces, or refused
+    ones) the part stays, and the refused faces are selected so they stand out.
+    """
+    FreeCADGui.Selection.clearSelection()
+    whole = not mesh.Faces and not mesh.Incomplete and not mesh.Proxy.last_error
+    if whole:
+        part.ViewObject.Visibility = False
+    elif mesh.RefusedFaceNames:
+        FreeCADGui.Selection.addSelection(part, list(mesh.RefusedFaceNames))
 
 
 def register():

@@ -2,7 +2,7 @@
 
     >>> from freecad.templatequad import make_mesh
     >>> mesh = make_mesh(doc, doc.Box, size=2.0)
-    >>> mesh.FemMesh.QuadrangleCount, mesh.TemplateTrees, mesh.Quality
+    >>> mesh.FemMesh.QuadrangleCount, mesh.Quality, mesh.Incomplete, mesh.RefusedFaceNames
 
 Works headless (freecadcmd) and in the GUI, where it also attaches the view provider.
 The GUI command calls it; it does not touch the selection, transactions or analyses.
@@ -17,13 +17,16 @@ from .mesh_object import TemplateQuadMesh
 
 def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]] = None,
               t4_ratio: int = 2, keep_going: bool = False, name: str = "TemplateQuadMesh",
-              faces: Optional[Iterable[str]] = None, raise_on_error: bool = True):
+              faces: Optional[Iterable[str]] = None, raise_on_error: bool = True,
+              min_size: float = 0.0, smooth: bool = True, best_corners: bool = False,
+              accept_incomplete: bool = False):
     """make_mesh(): add a TemplateQuad mesh of part_obj to doc, recompute, return it.
 
     Args:
         doc: the App.Document.
         part_obj: the object to mesh (a Part feature or anything with a Shape).
-        size: target edge length in mm; 0 = automatic (bounding-box diagonal / 25).
+        size: the maximum element size (CharacteristicLengthMax) in mm, the target edge
+            length; 0 = automatic (bounding-box diagonal / 25).
         corners: "FACE:V1,V2,..." entries (see the Corners property).
         t4_ratio: the k of the T4 template test (at least 2).
         keep_going: mesh the other faces when one is refused.
@@ -34,19 +37,33 @@ def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]]
             view too); False keeps the object, empty and marked invalid, for the caller
             to look at ``obj.Proxy.last_error`` (the GUI command does, to open the task
             panel).
+        min_size: CharacteristicLengthMin, the floor of the element size (0 = none).
+        smooth, best_corners, accept_incomplete: the Smooth, BestCorners and
+            AcceptIncomplete properties.
+
+    Returns:
+        The mesh object; None when the user cancelled the meshing in the GUI's
+        progress dialog (the new object is removed again).
 
     Raises:
         ValueError: meshing failed and raise_on_error is set; the message says why.
     """
     # FreeCAD's Length property would quietly turn a negative size into another value.
-    if not (math.isfinite(float(size)) and float(size) >= 0):
-        message = f"size must be a finite length of 0 (automatic) or more, not {size}"
+    bad = [f"{label} must be a finite length of 0 or more, not {value}"
+           for label, value in (("size", size), ("min_size", min_size))
+           if not (math.isfinite(float(value)) and float(value) >= 0)]
+    if bad:
+        message = bad[0]
         FreeCAD.Console.PrintError(f"TemplateQuad: {part_obj.Label}: {message}\n")
         raise ValueError(message)
     obj = doc.addObject("Fem::FemMeshObjectPython", name)
     TemplateQuadMesh(obj)
     obj.Part = part_obj
-    obj.Size = float(size)
+    obj.CharacteristicLengthMax = float(size)
+    obj.CharacteristicLengthMin = float(min_size)
+    obj.Smooth = bool(smooth)
+    obj.BestCorners = bool(best_corners)
+    obj.AcceptIncomplete = bool(accept_incomplete)
     obj.Corners = list(corners or [])
     obj.Faces = list(faces or [])
     obj.T4Ratio = int(t4_ratio)
@@ -55,6 +72,10 @@ def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]]
         from .view_provider import ViewProviderTemplateQuadMesh
         ViewProviderTemplateQuadMesh(obj.ViewObject)
     doc.recompute()
+    if obj.Proxy.cancelled:
+        doc.removeObject(obj.Name)
+        doc.recompute()
+        return None
     error = obj.Proxy.last_error
     if raise_on_error and error:
         doc.removeObject(obj.Name)

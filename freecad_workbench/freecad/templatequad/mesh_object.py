@@ -8,20 +8,28 @@ geometry behind the mesh (femmesh.meshsetsgetter: ``Shape``, else ``Part``); the
 constraints themselves find their nodes geometrically (FemMesh.getNodesByEdge), which
 works because the nodes lie on the CAD edges, in global coordinates.
 
-Properties (group "TemplateQuad"):
-    Part         link to the meshed Part feature (anything with a Shape)
-    Faces        FreeCAD face names to mesh ("Face3", ...); empty = all faces
-    Size         target edge length; 0 = automatic (bounding-box diagonal / 25)
-    Corners      "FACE:V1,V2,..." entries overriding the automatic corners
-    T4Ratio      the k of the T4 template test (k C <= A and k C <= B), >= 2
-    KeepGoing    mesh the other faces when one is refused
+Properties (group "TemplateQuad"; the size and order names are those of FreeCAD's
+Gmsh mesh object, where they mean the same):
+    Part                     link to the meshed Part feature (anything with a Shape)
+    Faces                    FreeCAD face names to mesh ("Face3", ...); empty = all
+    CharacteristicLengthMax  element size; 0 = automatic (bounding-box diagonal / 25)
+    CharacteristicLengthMin  the element size never goes below it (0 = no floor)
+    ElementOrder             "1st" (4-node quads; the engine has no second order yet)
+    Smooth                   optimize node positions on the surfaces
+    BestCorners              search more corner choices per face (slower)
+    Corners                  "FACE:V1,V2,..." entries overriding the automatic corners
+    KeepGoing                mesh the other faces when one is refused
+    AcceptIncomplete         let the CalculiX solver run on a mesh with refused faces
+    T4Ratio                  (advanced) the k of the T4 template test
 Outputs (read-only, group "TemplateQuad results"):
-    TemplateTrees, RefusedFaces, Quality
+    Quality (one summary line), ElementSizeUsed, ScaledJacobianMin and Mean,
+    QualityHistogram, Incomplete,
+    RefusedFaceNames, RefusedFaces (with the reasons), TemplateTrees
 """
 import FreeCAD
 
 from .stateless_proxy import StatelessProxy
-from . import meshing
+from . import meshing, solver_guard
 
 GROUP = "TemplateQuad"
 RESULT_GROUP = "TemplateQuad results"
@@ -34,31 +42,57 @@ _INPUTS = (
     ("App::PropertyLink", "Part", "The Part feature (any object with a Shape) to mesh"),
     ("App::PropertyStringList", "Faces",
      "Faces to mesh, as FreeCAD names (Face1, Face3, ...); empty meshes all faces"),
-    ("App::PropertyLength", "Size",
-     "Target edge length; 0 = automatic (bounding-box diagonal / 25)"),
-    ("App::PropertyStringList", "Corners",
-     "Corner overrides, one per face: FACE:V1,V2,... with 2 to 4 vertices where the "
-     "face's curves begin, as FreeCAD names (Face4:Vertex1,Vertex5,Vertex8) or 0-based "
-     "tquad indices (3:0,4,7)"),
-    ("App::PropertyInteger", "T4Ratio",
-     "The k of the T4 template test k*C <= A and k*C <= B (at least 2)"),
-    ("App::PropertyBool", "KeepGoing",
-     "Mesh the other faces when one is refused (refused faces are listed in RefusedFaces)"),
+    ("App::PropertyLength", "CharacteristicLengthMax",
+     "Element size: the target edge length; 0 = automatic (bounding-box diagonal / 25)"),
+    ("App::PropertyLength", "CharacteristicLengthMin",
+     "The element size never goes below this (0 = no floor); short or strongly curved "
+     "edges may still get shorter elements"),
+    ("App::PropertyEnumeration", "ElementOrder",
+     "Element order: 1st (4-node quadrilaterals); second order is not available yet"),
     ("App::PropertyBool", "Smooth",
      "Move interior nodes on each face's surface to better-shaped quads (never lowering "
      "the worst corner around a node)"),
     ("App::PropertyBool", "BestCorners",
      "Try more corner sets (2, 3 or 4 curves) on every face without holes and without a "
      "Corners override, and keep the best worst, then mean, element quality (slower)"),
+    ("App::PropertyStringList", "Corners",
+     "Corner overrides, one per face: FACE:V1,V2,... with 2 to 4 vertices where the "
+     "face's curves begin, as FreeCAD names (Face4:Vertex1,Vertex5,Vertex8) or 0-based "
+     "tquad indices (3:0,4,7)"),
+    ("App::PropertyBool", "KeepGoing",
+     "Mesh the other faces when one is refused (refused faces are listed in RefusedFaces "
+     "and the mesh is marked Incomplete)"),
+    ("App::PropertyBool", "AcceptIncomplete",
+     "Let the CalculiX solver run on this mesh although faces were refused (it has holes "
+     "there); off, the solver's check stops with the refused faces' names"),
+    ("App::PropertyInteger", "T4Ratio",
+     "Advanced: the k of the T4 template test k*C <= A and k*C <= B (at least 2)"),
 )
+#: The orders ElementOrder offers (FreeCAD's Gmsh object spells them the same way).
+ELEMENT_ORDERS = ["1st"]
 # Values of new properties, for new objects and for files saved before they existed
 # (so those files mesh as they did).
 _DEFAULTS = {"T4Ratio": 2, "Smooth": True, "BestCorners": False}
 _OUTPUTS = (
-    ("App::PropertyStringList", "TemplateTrees", "Template tree of each meshed face"),
+    ("App::PropertyString", "Quality", "Element count and quality, one line"),
+    ("App::PropertyLength", "ElementSizeUsed",
+     "The element size the mesh was made with (the automatic one when the size is 0)"),
+    ("App::PropertyFloat", "ScaledJacobianMin", "The worst quad's scaled Jacobian (1 = a square)"),
+    ("App::PropertyFloat", "ScaledJacobianMean", "The mean scaled Jacobian of the quads"),
+    ("App::PropertyIntegerList", "QualityHistogram",
+     "Quads per scaled Jacobian band: below 0, then [0, 0.1) ... [0.9, 1]"),
+    ("App::PropertyBool", "Incomplete", "Faces were refused: the mesh has holes there"),
+    ("App::PropertyStringList", "RefusedFaceNames", "The refused faces (Face28, ...)"),
     ("App::PropertyStringList", "RefusedFaces", "Faces not meshed, with the reason"),
-    ("App::PropertyString", "Quality", "Element count and quality summary"),
+    ("App::PropertyStringList", "TemplateTrees", "Template tree of each meshed face"),
 )
+
+
+def _migrate_size(obj) -> None:
+    """Files saved before the Gmsh-style names had a "Size" property: keep its value."""
+    if "Size" in obj.PropertiesList and "CharacteristicLengthMax" in obj.PropertiesList:
+        obj.CharacteristicLengthMax = obj.Size
+        obj.removeProperty("Size")
 
 
 def add_properties(obj) -> None:
@@ -66,8 +100,11 @@ def add_properties(obj) -> None:
     for prop_type, name, doc in _INPUTS:
         if not hasattr(obj, name):
             obj.addProperty(prop_type, name, GROUP, doc)
+            if name == "ElementOrder":
+                obj.ElementOrder = ELEMENT_ORDERS
             if name in _DEFAULTS:
                 setattr(obj, name, _DEFAULTS[name])
+    _migrate_size(obj)
     for prop_type, name, doc in _OUTPUTS:
         if not hasattr(obj, name):
             obj.addProperty(prop_type, name, RESULT_GROUP, doc, _OUTPUT)
@@ -77,49 +114,85 @@ class TemplateQuadMesh(StatelessProxy):
     """Proxy of a Fem::FemMeshObjectPython that meshes obj.Part with tquad."""
 
     #: Read by FEM's femutils.type_of_obj; must not start with "Fem::" (those are FEM's).
-    Type = "TemplateQuad::Mesh"
+    Type = solver_guard.MESH_TYPE
 
     def __init__(self, obj):
         obj.Proxy = self
         add_properties(obj)
         self.last_error = ""
+        self.cancelled = False
+        self.scaled_jacobian = None
+        solver_guard.install()
 
     def onDocumentRestored(self, obj):
+        self.last_error = ""
+        self.cancelled = False
+        self.scaled_jacobian = None
         add_properties(obj)
+        solver_guard.install()
 
     def execute(self, obj):
         """Re-mesh: obj.Part's shape -> tquad -> obj.FemMesh, outputs, report view.
 
         On failure the mesh is emptied (a stale mesh must not reach a solver), the
         reason is printed and kept in ``last_error``, and the exception propagates so
-        FreeCAD marks the object invalid.
+        FreeCAD marks the object invalid. Cancelled by the user (GUI), everything is
+        left as it was and ``cancelled`` is set; the caller restores the inputs.
         """
         self.last_error = ""
+        self.cancelled = False
         try:
-            shape = self._source_shape(obj)
-            mesh = meshing.mesh_shape(shape, size=obj.Size.Value,
-                                      faces=meshing.parse_faces(obj.Faces),
-                                      corners=meshing.parse_corners(obj.Corners),
-                                      t4_ratio=obj.T4Ratio, keep_going=obj.KeepGoing,
-                                      smooth=obj.Smooth, best_corners=obj.BestCorners)
+            mesh = self._mesh(obj)
+            if mesh is None:
+                self.cancelled = True
+                return
+            if mesh.refused_faces and not obj.KeepGoing:
+                raise ValueError(meshing.refusal_error(mesh))
         except meshing.TquadMissing as error:
             self.last_error = str(error).strip()
             self._clear(obj)
+            self.scaled_jacobian = None
             FreeCAD.Console.PrintError(self.last_error + "\n")
             raise
         except ValueError as error:
             self.last_error = meshing.explain_tquad_error(str(error).strip())
             self._clear(obj)
+            self.scaled_jacobian = None
             FreeCAD.Console.PrintError(f"TemplateQuad: {obj.Label}: {self.last_error}\n")
             raise
 
         obj.FemMesh = meshing.to_femmesh(mesh)
         obj.TemplateTrees = meshing.template_tree_lines(mesh)
         obj.RefusedFaces = meshing.refused_face_lines(mesh)
+        obj.RefusedFaceNames = meshing.refused_face_names(mesh)
+        obj.Incomplete = bool(mesh.refused_faces)
         obj.Quality = meshing.quality_summary(mesh)
+        obj.ScaledJacobianMin = float(mesh.quality["scaled_jacobian"]["min"])
+        obj.ScaledJacobianMean = float(mesh.quality["scaled_jacobian"]["avg"])
+        obj.QualityHistogram = [int(n) for n in mesh.quality["jacobian_histogram"]]
+        obj.ElementSizeUsed = float(mesh.edge_size or 0.0)
+        self.scaled_jacobian = mesh.scaled_jacobian  # per quad, for the colour map (not saved)
         for line in obj.RefusedFaces:
             FreeCAD.Console.PrintWarning(
                 f"TemplateQuad: {obj.Label}: {obj.Part.Label} {line} (not meshed)\n")
+
+    def _mesh(self, obj):
+        """The tquad mesh of the linked part (None when the user cancelled it).
+
+        Refused faces come back as records whatever KeepGoing says; execute() decides.
+        In the GUI the work runs beside a progress dialog with a Cancel button.
+        """
+        shape = self._source_shape(obj)
+        run = meshing.run_plain
+        if FreeCAD.GuiUp:
+            from .progress_dialog import run_with_progress
+            run = run_with_progress
+        return run(lambda progress: meshing.mesh_shape(
+            shape, size=obj.CharacteristicLengthMax.Value,
+            min_size=obj.CharacteristicLengthMin.Value, faces=meshing.parse_faces(obj.Faces),
+            corners=meshing.parse_corners(obj.Corners), t4_ratio=obj.T4Ratio,
+            keep_going=True, smooth=obj.Smooth, best_corners=obj.BestCorners,
+            progress=progress), f"Meshing {obj.Part.Label}")
 
     @staticmethod
     def _source_shape(obj):
@@ -138,5 +211,9 @@ class TemplateQuadMesh(StatelessProxy):
         obj.FemMesh = Fem.FemMesh()
         obj.TemplateTrees = []
         obj.RefusedFaces = []
+        obj.RefusedFaceNames = []
+        obj.Incomplete = False
         obj.Quality = ""
-
+        obj.QualityHistogram = []
+        obj.ScaledJacobianMin = obj.ScaledJacobianMean = 0.0
+        obj.ElementSizeUsed = 0.0

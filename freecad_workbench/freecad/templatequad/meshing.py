@@ -28,9 +28,10 @@ class TquadMissing(ImportError):
 def load_tquad():
     """load_tquad(): import and return the ``tquad`` module.
 
-    FreeCAD puts the add-on root on sys.path when it loads the add-on, and install.sh
-    copies the module there. When the package is imported some other way (a script
-    that put freecad_workbench/ on sys.path), the root is added here as a fallback.
+    FreeCAD puts the workbench folder on sys.path when it loads the add-on, and
+    install.sh copies the module there. When the package is imported some other way
+    (a script that put freecad_workbench/ on sys.path), the folder is added here as a
+    fallback.
 
     Raises:
         TquadMissing: with a message saying the module was not built or installed.
@@ -40,9 +41,9 @@ def load_tquad():
         return tquad
     except ImportError as error:
         failure = error
-    if paths.ADDON_ROOT not in sys.path and os.path.isdir(
-            os.path.join(paths.ADDON_ROOT, "tquad")):
-        sys.path.append(paths.ADDON_ROOT)
+    if paths.WORKBENCH_DIR not in sys.path and os.path.isdir(
+            os.path.join(paths.WORKBENCH_DIR, "tquad")):
+        sys.path.append(paths.WORKBENCH_DIR)
         try:
             import tquad
             return tquad
@@ -109,7 +110,8 @@ def parse_faces(names: Iterable[str]) -> Optional[List[int]]:
 
 def mesh_shape(shape, size: float = 0.0, faces: Optional[Sequence[int]] = None,
                corners: Optional[Dict[int, List[int]]] = None, t4_ratio: int = 2,
-               keep_going: bool = False, smooth: bool = True, best_corners: bool = False):
+               keep_going: bool = False, smooth: bool = True, best_corners: bool = False,
+               min_size: float = 0.0, progress=None):
     """mesh_shape(): mesh a Part.Shape with tquad; returns the tquad.Mesh.
 
     The shape goes over as BREP text (``exportBrepToString``), which keeps its
@@ -117,13 +119,24 @@ def mesh_shape(shape, size: float = 0.0, faces: Optional[Sequence[int]] = None,
 
     Raises:
         TquadMissing: the module is not installed.
-        ValueError: tquad refused the shape or a face (message from tquad).
+        ValueError: tquad refused the shape or a face (message from tquad), or the
+            minimum size is above the maximum.
+        tquad.Cancelled: the progress callable asked to stop.
     """
+    if size > 0 and min_size > size:
+        raise ValueError(f"the minimum element size ({min_size:g} mm) is larger than the "
+                         f"maximum ({size:g} mm)")
     tquad = load_tquad()
     return tquad.mesh_shape(shape.exportBrepToString(), size=float(size), faces=faces,
                             corners=corners or None, keep_going=bool(keep_going),
                             t4_ratio=int(t4_ratio), smooth=bool(smooth),
-                            best_corners=bool(best_corners))
+                            best_corners=bool(best_corners), min_size=float(min_size),
+                            progress=progress)
+
+
+def run_plain(work, title: str = ""):
+    """run_plain(): work(None): meshing without a progress display (headless)."""
+    return work(None)
 
 
 def to_femmesh(mesh):
@@ -223,25 +236,81 @@ def template_tree_lines(mesh) -> List[str]:
             for f in mesh.faces]
 
 
-def refused_face_lines(mesh) -> List[str]:
-    """refused_face_lines(): "FaceN: <reason>" per face tquad did not mesh.
+#: What a FreeCAD user can do about a refused face, per tquad refusal code.
+REFUSAL_ADVICE = {
+    "too_coarse": "too few elements along its edges; lower the maximum element size",
+    "inverted_quads": "every mesh found folds over on its surface; try other corners or "
+                      "a smaller element size",
+    "not_supported": "this kind of face is not supported yet",
+    "damaged": "its geometry is invalid; Part > Check geometry shows why",
+    "cannot_mesh": "no mesh found; try other corners or a smaller element size",
+    "internal": "the mesher failed on it; please report it with the part",
+}
 
-    tquad's reasons start with its own 0-based "face k"; that prefix is dropped so the
-    line names the face once, the way FreeCAD does.
+# tquad's 0-based sub-shape numbers, as FreeCAD names them (1-based, capitalized).
+_NUMBERED = re.compile(r"\b(face|edge|vertex)(?:es)?( \d+(?:(?:, | and )\d+)*)\b")
+_VERTICES = re.compile(r"\bvertices( \d+(?:(?:, | and )\d+)*)\b")
+# Command-line words in tquad's messages, as the FreeCAD object calls them.
+_CLI_WORDS = (
+    (re.compile(r"\s*\(--keep-going meshes the other faces\)"), ""),
+    (re.compile(r"\s*\(keep_going=True meshes the other faces\)"), ""),
+    (re.compile(r"a (larger|smaller) --size"), r"a \1 element size"),
+    (re.compile(r" \(--max-quads\)"), ""),
+    (re.compile(r"--size"), "the element size"),
+    (re.compile(r"--corners"), "Corners"),
+    (re.compile(r"--faces"), "Faces"),
+)
+
+
+def _rename(kind: str, numbers: str) -> str:
+    names = [f"{kind}{int(n) + 1}" for n in re.findall(r"\d+", numbers)]
+    return " and ".join([", ".join(names[:-1]), names[-1]]) if len(names) > 1 else names[0]
+
+
+def freecad_wording(message: str) -> str:
+    """freecad_wording(): a tquad message in a FreeCAD user's terms.
+
+    tquad counts faces, edges and vertices from 0 and speaks of command-line options;
+    FreeCAD names them Face1, Edge1, Vertex1 and the object has properties. Only the
+    wording changes: decisions are taken on tquad's records (codes, indices), never on
+    its messages.
     """
-    return [f"Face{r['face'] + 1}: " + re.sub(rf"^face {r['face']}\b\s*", "", r["reason"])
-            for r in mesh.refused_faces]
+    text = _VERTICES.sub(lambda m: _rename("Vertex", m.group(1)), message)
+    text = _NUMBERED.sub(lambda m: _rename(m.group(1).capitalize(), m.group(2)), text)
+    for pattern, replacement in _CLI_WORDS:
+        text = pattern.sub(replacement, text)
+    return text
+
+
+def refused_face_names(mesh) -> List[str]:
+    """refused_face_names(): "FaceN" of each face tquad did not mesh (1-based)."""
+    return [f"Face{r['face'] + 1}" for r in mesh.refused_faces]
+
+
+def refused_face_lines(mesh) -> List[str]:
+    """refused_face_lines(): "FaceN: <advice> (<what failed>)" per refused face.
+
+    The advice follows the refusal's code; the detail is tquad's reason without its
+    leading "face k", in FreeCAD's names.
+    """
+    lines = []
+    for r in mesh.refused_faces:
+        detail = freecad_wording(re.sub(rf"^face {r['face']}\b:?\s*", "", r["reason"]))
+        advice = REFUSAL_ADVICE.get(r.get("code"), REFUSAL_ADVICE["cannot_mesh"])
+        lines.append(f"Face{r['face'] + 1}: {advice} ({detail})")
+    return lines
+
+
+def refusal_error(mesh) -> str:
+    """refusal_error(): the error when faces are refused and the user did not let the
+    other faces be meshed (KeepGoing off)."""
+    names = refused_face_names(mesh)
+    first = refused_face_lines(mesh)[0]
+    more = f" ({len(names) - 1} more: {', '.join(names[1:])})" if len(names) > 1 else ""
+    return (f"{len(names)} face(s) not meshed: {first}{more}. Turn on 'Mesh the other "
+            "faces' (KeepGoing) to mesh the rest.")
 
 
 def explain_tquad_error(message: str) -> str:
-    """explain_tquad_error(): a tquad error message, with a note on its 0-based numbers.
-
-    tquad speaks the command line's language (0-based faces, --keep-going); the note
-    maps that onto what the FreeCAD user sees and sets.
-    """
-    notes = []
-    if re.search(r"\b(face|vertex|edge) \d", message):
-        notes.append("tquad counts from 0: its face 0 is FreeCAD's Face1, vertex 0 is Vertex1")
-    if "--keep-going" in message:
-        notes.append("--keep-going is the KeepGoing property")
-    return message + (f" [{'; '.join(notes)}]" if notes else "")
+    """explain_tquad_error(): a tquad error message in a FreeCAD user's terms."""
+    return freecad_wording(message)

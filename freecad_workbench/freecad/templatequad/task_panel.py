@@ -1,19 +1,67 @@
 """Task panel of the TemplateQuad mesh object: edit the parameters, see the result.
 
-Inputs: Size (0 = automatic), T4 ratio, keep going, corner overrides (one
-``FACE:V1,V2,...`` entry per line; "Add from selection" writes one from a face and its
-vertices picked in the 3D view). Outputs: element count and quality, each face's
-template tree, refused faces, and the error when meshing failed.
+Top: one summary line (elements, faces, worst and mean quality, the element size
+used), the refused faces with a button that selects them in the 3D view, and a
+histogram of the scaled Jacobian with a "colour the mesh by quality" switch.
+Parameters as FreeCAD's Gmsh mesh object names them (maximum and minimum element
+size, element order), then smoothing, corner choice, per-face corners, keep going
+and accepting an incomplete mesh; the template details (T4 ratio, template trees,
+every refusal's reason) sit in a folded "Advanced" section.
 
-Apply re-meshes (an undoable step); OK applies and closes; Cancel restores the values
-the panel opened with and re-meshes if Apply had changed them.
+Apply re-meshes (an undoable step) when a value changed; OK applies the same way and
+closes; Cancel restores the values the panel opened with and re-meshes if Apply had
+changed them. A mesh cancelled from its progress dialog leaves the previous mesh and
+values.
 """
+import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui  # FreeCAD's shim: QtGui also holds the widgets
 
 from . import paths
+from .mesh_object import ELEMENT_ORDERS
+from .quality_colours import HISTOGRAM_LABELS, histogram_band_colour
+from .view_provider import show_quality, showing_quality
 
-_INPUT_NAMES = ("Size", "T4Ratio", "KeepGoing", "Corners")
+#: The properties the panel edits, in the order of _values().
+_INPUT_NAMES = ("CharacteristicLengthMax", "CharacteristicLengthMin", "ElementOrder",
+                "Smooth", "BestCorners", "Corners", "KeepGoing", "AcceptIncomplete",
+                "T4Ratio")
+_CORNER_CHOICES = ("Automatic", "Best of several (slower)")
+
+
+class QualityHistogram(QtGui.QWidget):
+    """Bars of the quad count per scaled Jacobian band, coloured as the colour map."""
+
+    def __init__(self):
+        super().__init__()
+        self.counts = []
+        self.setMinimumHeight(70)
+        self.setToolTip("Quads per scaled Jacobian band (1 = a square, below 0 = inverted)")
+
+    def set_counts(self, counts):
+        self.counts = list(counts)
+        self.update()
+
+    def paintEvent(self, event):
+        painter = QtGui.QPainter(self)
+        width, height = self.width(), self.height()
+        label_height = painter.fontMetrics().height()
+        if not self.counts or max(self.counts) == 0:
+            painter.drawText(0, 0, width, height, QtCore.Qt.AlignCenter, "no mesh")
+            return
+        bands = len(self.counts)
+        bar_width = width / bands
+        top = max(self.counts)
+        for band, count in enumerate(self.counts):
+            r, g, b = histogram_band_colour(band)
+            bar_height = 0 if count == 0 else max(1, int((height - label_height - 2) * count / top))
+            x = int(band * bar_width)
+            painter.fillRect(x + 1, height - label_height - bar_height, max(1, int(bar_width) - 2),
+                             bar_height, QtGui.QColor(int(255 * r), int(255 * g), int(255 * b)))
+        painter.setPen(self.palette().color(QtGui.QPalette.WindowText))
+        for band in (0, 1, bands - 1):  # "< 0", "0.0" and "0.9" are enough to read it
+            painter.drawText(int(band * bar_width), height - label_height, int(bar_width) + 8,
+                             label_height, QtCore.Qt.AlignLeft, HISTOGRAM_LABELS[band])
 
 
 class TemplateQuadTaskPanel:
@@ -22,9 +70,10 @@ class TemplateQuadTaskPanel:
     def __init__(self, obj):
         self.obj = obj
         self.original = self._inputs()
+        self.applied_values = self.original
         self.applied = False
         self.form = self._build_form()
-        self._load()
+        self._load(self.original)
         self._show_results()
 
     # --- FreeCAD task dialog interface -------------------------------------------------
@@ -37,7 +86,7 @@ class TemplateQuadTaskPanel:
             self.apply()
 
     def accept(self):
-        """OK: apply; close unless the mesh failed (then the panel shows why)."""
+        """OK: apply (only if something changed); close unless the mesh failed."""
         if not self.apply():
             return False
         FreeCADGui.getDocument(self.obj.Document).resetEdit()
@@ -52,11 +101,27 @@ class TemplateQuadTaskPanel:
 
     # --- actions ----------------------------------------------------------------------
     def apply(self) -> bool:
-        """Write the panel's values to the object and re-mesh; True if it meshed."""
+        """Write the panel's values to the object and re-mesh; True if it is meshed.
+
+        Nothing is re-meshed when the values are those already meshed (Apply then OK
+        meshes once). A mesh cancelled by the user restores the values it replaced.
+        """
+        values = self._values()
+        error = getattr(self.obj.Proxy, "last_error", "")
+        if values == self._inputs() and not error and "Touched" not in self.obj.State:
+            return True
         doc = self.obj.Document
+        before = self._inputs()
         doc.openTransaction("Edit template quad mesh")
-        self._store(self._values())
+        self._store(values)
         doc.recompute()
+        if getattr(self.obj.Proxy, "cancelled", False):
+            doc.abortTransaction()
+            self._store(before)
+            self.obj.purgeTouched()  # the kept mesh is the one of the values restored
+            self._load(before)
+            self.summary.setText("Cancelled: the previous mesh is kept.")
+            return False
         doc.commitTransaction()
         self.applied = True
         self._show_results()
@@ -74,44 +139,90 @@ class TemplateQuadTaskPanel:
                 elif name.startswith("Vertex"):
                     vertices.append(name)
         if len(faces) != 1 or not 2 <= len(vertices) <= 4:
-            self.status.setText("Select one face and its 2 to 4 corner vertices of "
-                                f"{self.obj.Part.Label if self.obj.Part else 'the part'} "
-                                "(Ctrl+click), in order around the face.")
+            self.summary.setText("Select one face and its 2 to 4 corner vertices of "
+                                 f"{self.obj.Part.Label if self.obj.Part else 'the part'} "
+                                 "(Ctrl+click), in order around the face.")
             return
         self.corners.appendPlainText(f"{faces[0]}:{','.join(vertices)}")
+
+    def select_refused_faces(self):
+        """Select the refused faces on the part, so the 3D view shows where they are."""
+        names = list(self.obj.RefusedFaceNames)
+        part = self.obj.Part
+        if not names or part is None:
+            return
+        part.ViewObject.Visibility = True
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(part, names)
+
+    def toggle_quality_colours(self, on):
+        if not show_quality(self.obj.ViewObject, on):
+            self.quality_colours.setChecked(False)
+            self.summary.setText(self.summary.text() + " Recompute the mesh to colour it "
+                                 "(the quality is not saved with the document).")
 
     # --- helpers ----------------------------------------------------------------------
     def _inputs(self):
         o = self.obj
-        return (o.Size.Value, o.T4Ratio, o.KeepGoing, list(o.Corners))
+        return (o.CharacteristicLengthMax.Value, o.CharacteristicLengthMin.Value,
+                o.ElementOrder, o.Smooth, o.BestCorners, list(o.Corners), o.KeepGoing,
+                o.AcceptIncomplete, o.T4Ratio)
 
     def _values(self):
         corners = [line.strip() for line in self.corners.toPlainText().splitlines()
                    if line.strip()]
-        return (self.size.value(), self.t4_ratio.value(), self.keep_going.isChecked(),
-                corners)
+        return (self.max_size.value(), self.min_size.value(),
+                self.element_order.currentText(), self.smooth.isChecked(),
+                self.corner_choice.currentIndex() == 1, corners,
+                self.keep_going.isChecked(), self.accept_incomplete.isChecked(),
+                self.t4_ratio.value())
 
     def _store(self, values):
-        size, t4_ratio, keep_going, corners = values
-        o = self.obj
-        o.Size, o.T4Ratio, o.KeepGoing, o.Corners = size, t4_ratio, keep_going, corners
+        """Set the properties whose values differ (an unchanged one stays untouched)."""
+        for name, value, current in zip(_INPUT_NAMES, values, self._inputs()):
+            if value != current:
+                setattr(self.obj, name, value)
 
-    def _load(self):
-        size, t4_ratio, keep_going, corners = self._inputs()
-        self.size.setValue(size)
-        self.t4_ratio.setValue(t4_ratio)
-        self.keep_going.setChecked(keep_going)
+    def _load(self, values):
+        (max_size, min_size, order, smooth, best, corners, keep_going, accept,
+         t4_ratio) = values
+        self.max_size.setValue(max_size)
+        self.min_size.setValue(min_size)
+        self.element_order.setCurrentIndex(max(0, self.element_order.findText(order)))
+        self.smooth.setChecked(smooth)
+        self.corner_choice.setCurrentIndex(1 if best else 0)
         self.corners.setPlainText("\n".join(corners))
+        self.keep_going.setChecked(keep_going)
+        self.accept_incomplete.setChecked(accept)
+        self.t4_ratio.setValue(t4_ratio)
 
     def _show_results(self):
         o = self.obj
         error = getattr(o.Proxy, "last_error", "")
+        used = o.ElementSizeUsed.Value
+        self.max_size.setSpecialValueText(f"automatic ({used:.3g} mm)" if used > 0 else "automatic")
+        refused = list(o.RefusedFaceNames)
         if error:
-            self.status.setText(f"<span style='color:#b00'>Not meshed: {error}</span>")
+            self.summary.setText(f"<span style='color:#b00'>Not meshed.</span> {error}")
+        elif o.FemMesh.FaceCount == 0:
+            self.summary.setText("Not meshed yet.")
         else:
-            self.status.setText(o.Quality or "Not meshed yet.")
-        self.trees.setPlainText("\n".join(o.TemplateTrees))
-        self.refused.setPlainText("\n".join(o.RefusedFaces) or "none")
+            faces = " on all faces" if not refused else ""
+            self.summary.setText(f"{o.FemMesh.QuadrangleCount} quads{faces}, element size "
+                                 f"{used:.3g} mm; scaled Jacobian worst "
+                                 f"{o.ScaledJacobianMin:.2f}, mean {o.ScaledJacobianMean:.2f}")
+        self.refused_box.setVisible(bool(refused))
+        if refused:
+            self.refused_label.setText(
+                f"<span style='color:#b60'>Incomplete: {len(refused)} face(s) not "
+                f"meshed: {', '.join(refused[:6])}{' ...' if len(refused) > 6 else ''}.</span> "
+                "The solver stops on this mesh unless 'Solve with holes' is on.")
+        self.histogram.set_counts(o.QualityHistogram)
+        self.quality_colours.setChecked(showing_quality(o.ViewObject))
+        details = list(o.RefusedFaces) + list(o.TemplateTrees)
+        if o.Quality:
+            details.insert(0, o.Quality)
+        self.details.setPlainText("\n".join(details))
 
     def _build_form(self):
         form = QtGui.QWidget()
@@ -119,45 +230,103 @@ class TemplateQuadTaskPanel:
         form.setWindowIcon(QtGui.QIcon(paths.icon("TemplateQuad_Mesh")))
         layout = QtGui.QVBoxLayout(form)
 
-        params = QtGui.QGroupBox("Parameters")
+        result = QtGui.QGroupBox("Result")
+        box = QtGui.QVBoxLayout(result)
+        self.summary = QtGui.QLabel()
+        self.summary.setWordWrap(True)
+        self.summary.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
+        box.addWidget(self.summary)
+        self.refused_box = QtGui.QWidget()
+        refused_layout = QtGui.QVBoxLayout(self.refused_box)
+        refused_layout.setContentsMargins(0, 0, 0, 0)
+        self.refused_label = QtGui.QLabel()
+        self.refused_label.setWordWrap(True)
+        refused_layout.addWidget(self.refused_label)
+        select = QtGui.QPushButton("Select the faces not meshed")
+        select.clicked.connect(self.select_refused_faces)
+        refused_layout.addWidget(select)
+        box.addWidget(self.refused_box)
+        self.histogram = QualityHistogram()
+        box.addWidget(self.histogram)
+        self.quality_colours = QtGui.QCheckBox("Colour the mesh by quality")
+        self.quality_colours.setToolTip("Each quad coloured by its scaled Jacobian: green "
+                                        "1 (square), yellow 0.6, red 0.2 and below")
+        self.quality_colours.toggled.connect(self.toggle_quality_colours)
+        box.addWidget(self.quality_colours)
+        layout.addWidget(result)
+
+        params = QtGui.QGroupBox("Mesh parameters")
         grid = QtGui.QFormLayout(params)
-        self.size = QtGui.QDoubleSpinBox()
-        self.size.setRange(0.0, 1e9)
-        self.size.setDecimals(3)
-        self.size.setSuffix(" mm")
-        self.size.setSpecialValueText("automatic")  # shown for 0
-        self.size.setToolTip("Target edge length; 0 = bounding-box diagonal / 25")
-        grid.addRow("Element size:", self.size)
+        grid.setFieldGrowthPolicy(QtGui.QFormLayout.AllNonFixedFieldsGrow)
+        self.max_size = self._length_box("Element size: the target edge length; 0 = "
+                                         "automatic (bounding-box diagonal / 25)")
+        grid.addRow("Max. size:", self.max_size)
+        self.min_size = self._length_box("The element size never goes below this "
+                                         "(0 = no floor)")
+        self.min_size.setSpecialValueText("none")
+        grid.addRow("Min. size:", self.min_size)
+        self.element_order = QtGui.QComboBox()
+        self.element_order.addItems(ELEMENT_ORDERS)
+        self.element_order.setToolTip("1st: 4-node quadrilaterals (S4 shells in CalculiX); "
+                                      "second order is not available yet")
+        grid.addRow("Element order:", self.element_order)
+        self.smooth = QtGui.QCheckBox("Smooth (better-shaped elements)")
+        grid.addRow(self.smooth)
+        self.corner_choice = QtGui.QComboBox()
+        self.corner_choice.addItems(_CORNER_CHOICES)
+        self.corner_choice.setToolTip("Best of several: try 2, 3 and 4 curves per face and "
+                                      "keep the best elements")
+        grid.addRow("Corners:", self.corner_choice)
+        self.corners = QtGui.QPlainTextEdit()
+        self.corners.setToolTip("Per face, one line: Face4:Vertex1,Vertex5,Vertex8 (the "
+                                "vertices where the face's sides begin)")
+        self.corners.setMaximumHeight(54)
+        grid.addRow("Per face:", self.corners)
+        pick = QtGui.QPushButton("Add face corners from selection")
+        pick.clicked.connect(self.add_corners_from_selection)
+        grid.addRow(pick)
+        self.keep_going = QtGui.QCheckBox("Mesh the other faces when one fails")
+        grid.addRow(self.keep_going)
+        self.accept_incomplete = QtGui.QCheckBox("Solve with holes (faces not meshed)")
+        self.accept_incomplete.setToolTip("Let CalculiX run on this mesh although faces "
+                                          "were not meshed")
+        grid.addRow(self.accept_incomplete)
+        layout.addWidget(params)
+
+        advanced_toggle = QtGui.QToolButton()
+        advanced_toggle.setText("Advanced")
+        advanced_toggle.setCheckable(True)
+        advanced_toggle.setToolButtonStyle(QtCore.Qt.ToolButtonTextBesideIcon)
+        advanced_toggle.setArrowType(QtCore.Qt.RightArrow)
+        layout.addWidget(advanced_toggle)
+        self.advanced = QtGui.QWidget()
+        advanced = QtGui.QFormLayout(self.advanced)
         self.t4_ratio = QtGui.QSpinBox()
         self.t4_ratio.setRange(2, 1000)
         self.t4_ratio.setToolTip("k of the T4 template test: k*C <= A and k*C <= B")
-        grid.addRow("T4 ratio:", self.t4_ratio)
-        self.keep_going = QtGui.QCheckBox("Mesh the other faces when one is refused")
-        grid.addRow(self.keep_going)
-        self.corners = QtGui.QPlainTextEdit()
-        self.corners.setToolTip("One face per line: Face4:Vertex1,Vertex5,Vertex8 "
-                                "(FreeCAD names) or 3:0,4,7 (0-based indices)")
-        self.corners.setMaximumHeight(80)
-        grid.addRow("Corners:", self.corners)
-        pick = QtGui.QPushButton("Add from selection")
-        pick.clicked.connect(self.add_corners_from_selection)
-        grid.addRow(pick)
-        layout.addWidget(params)
+        advanced.addRow("T4 ratio:", self.t4_ratio)
+        self.details = QtGui.QPlainTextEdit()
+        self.details.setReadOnly(True)
+        self.details.setToolTip("Counts and quality, each refused face's reason, each "
+                                "face's template tree")
+        advanced.addRow(self.details)
+        self.advanced.setVisible(False)
 
-        results = QtGui.QGroupBox("Result")
-        box = QtGui.QVBoxLayout(results)
-        self.status = QtGui.QLabel()
-        self.status.setWordWrap(True)
-        self.status.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
-        box.addWidget(self.status)
-        box.addWidget(QtGui.QLabel("Template trees:"))
-        self.trees = QtGui.QPlainTextEdit()
-        self.trees.setReadOnly(True)
-        box.addWidget(self.trees)
-        box.addWidget(QtGui.QLabel("Refused faces:"))
-        self.refused = QtGui.QPlainTextEdit()
-        self.refused.setReadOnly(True)
-        self.refused.setMaximumHeight(60)
-        box.addWidget(self.refused)
-        layout.addWidget(results)
+        def fold(shown):
+            self.advanced.setVisible(shown)
+            advanced_toggle.setArrowType(QtCore.Qt.DownArrow if shown else QtCore.Qt.RightArrow)
+
+        advanced_toggle.toggled.connect(fold)
+        layout.addWidget(self.advanced)
+        layout.addStretch(1)
         return form
+
+    @staticmethod
+    def _length_box(tip: str):
+        box = QtGui.QDoubleSpinBox()
+        box.setRange(0.0, 1e9)
+        box.setDecimals(3)
+        box.setSuffix(" mm")
+        box.setSpecialValueText("automatic")  # shown for 0
+        box.setToolTip(tip)
+        return box

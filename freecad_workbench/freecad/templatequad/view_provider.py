@@ -1,8 +1,8 @@
 """View provider of the TemplateQuad mesh object (GUI side).
 
-The C++ side (FemGui::ViewProviderFemMeshPython) draws the FemMesh; this proxy only
-adds the icon, the task panel on double-click / Edit, and a display mode that shows
-the element edges (what one wants to see of a quad mesh).
+The C++ side (FemGui::ViewProviderFemMeshPython) draws the FemMesh; this proxy adds
+the icon, the task panel on double-click / Edit, a display mode that shows the
+element edges where they stay readable, and the quality colour map.
 """
 import FreeCAD
 import FreeCADGui
@@ -12,6 +12,11 @@ from . import paths
 
 #: ViewProviderFemMesh's display mode with shaded faces and element edges.
 DISPLAY_MODE = "Faces & Wireframe"
+#: Its display mode with shaded faces only.
+FACES_MODE = "Faces"
+#: Above this many quads, drawn edges cover the faces (a part at 1e6 quads shows
+#: solid black at a whole-part zoom), so a new mesh is shown with faces only.
+LARGE_MESH_QUADS = 100_000
 
 
 class ViewProviderTemplateQuadMesh(StatelessProxy):
@@ -24,6 +29,16 @@ class ViewProviderTemplateQuadMesh(StatelessProxy):
 
     def attach(self, vobj):
         self.Object = vobj.Object
+
+    def updateData(self, obj, prop):
+        """A new mesh: faces only when it is too dense for its edges to be read."""
+        if prop != "FemMesh" or not hasattr(obj, "ViewObject") or obj.ViewObject is None:
+            return
+        vobj = obj.ViewObject
+        if obj.FemMesh.FaceCount > LARGE_MESH_QUADS and vobj.DisplayMode == DISPLAY_MODE:
+            vobj.DisplayMode = FACES_MODE
+        if showing_quality(vobj):
+            show_quality(vobj, True)  # the colours of the new mesh, not the old one's
 
     def getIcon(self):
         return paths.icon("TemplateQuad_Mesh")
@@ -52,3 +67,24 @@ class ViewProviderTemplateQuadMesh(StatelessProxy):
             gui_doc.setEdit(vobj.Object.Name)
         return True
 
+
+
+def showing_quality(vobj) -> bool:
+    return bool(getattr(vobj.Proxy, "quality_shown", False))
+
+
+def show_quality(vobj, on: bool) -> bool:
+    """show_quality(): colour each quad by its scaled Jacobian (on), or plainly (off).
+
+    The values are the last mesh's (the mesh object's proxy keeps them in memory, not
+    in the file); False when there are none, as after opening a saved document.
+    """
+    from .quality_colours import element_colours
+
+    values = getattr(vobj.Object.Proxy, "scaled_jacobian", None)
+    vobj.Proxy.quality_shown = bool(on)
+    if not on or values is None or len(values) != vobj.Object.FemMesh.FaceCount:
+        vobj.ElementColor = {}
+        return not on
+    vobj.ElementColor = element_colours(values)
+    return True

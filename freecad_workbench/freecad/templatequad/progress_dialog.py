@@ -1,0 +1,88 @@
+"""Meshing beside a progress dialog with a Cancel button (GUI only).
+
+The mesher runs in a worker thread; the main thread keeps FreeCAD's window alive
+(repaints, the dialog's Cancel) until it is done. The two meet only in the mesher's
+progress callback: it records the stage and answers whether Cancel was pressed, and
+tquad then stops before its next step and raises tquad.Cancelled. Qt is touched from
+the main thread only.
+
+The mesher releases the GIL while it works and takes it for each progress call; the
+main thread waits with ``Thread.join(timeout)``, which releases it too, so neither
+blocks the other.
+"""
+import threading
+
+import FreeCADGui
+from PySide import QtCore, QtGui
+
+from . import meshing
+
+#: A mesh taking less than this many milliseconds shows no dialog at all.
+SHOW_AFTER_MS = 400
+#: How often the main thread looks at the worker's progress (seconds).
+POLL_SECONDS = 0.05
+#: Steps of the dialog's bar for one stage of the mesher.
+BAR_STEPS = 1000
+
+
+class _Progress:
+    """What the worker reports and what the dialog asks, shared under a lock."""
+
+    def __init__(self):
+        self.lock = threading.Lock()
+        self.stage, self.done, self.total = "starting", 0, 1
+        self.cancel = threading.Event()
+
+    def __call__(self, stage: str, done: int, total: int) -> bool:
+        """The mesher's progress callback (worker thread): True asks it to stop."""
+        with self.lock:
+            self.stage, self.done, self.total = stage, done, max(total, 1)
+        return self.cancel.is_set()
+
+    def snapshot(self):
+        with self.lock:
+            return self.stage, self.done, self.total
+
+
+def run_with_progress(work, title: str):
+    """run_with_progress(): work(progress) in a worker thread, a dialog meanwhile.
+
+    Returns work's result, or None when the user pressed Cancel (the mesher stopped
+    and nothing was changed). Any other exception of work is raised here.
+    """
+    progress = _Progress()
+    outcome = {}
+
+    def target():
+        try:
+            outcome["result"] = work(progress)
+        except BaseException as error:  # handed to the main thread, raised there
+            outcome["error"] = error
+
+    dialog = QtGui.QProgressDialog(title, "Cancel", 0, BAR_STEPS, FreeCADGui.getMainWindow())
+    dialog.setWindowTitle("TemplateQuad")
+    dialog.setWindowModality(QtCore.Qt.WindowModal)
+    dialog.setMinimumDuration(SHOW_AFTER_MS)
+    dialog.setAutoClose(False)
+    dialog.setAutoReset(False)
+    worker = threading.Thread(target=target, name="TemplateQuad meshing", daemon=True)
+    worker.start()
+    try:
+        while worker.is_alive():
+            worker.join(POLL_SECONDS)
+            if dialog.wasCanceled():  # the button, Escape, or cancel() from a script
+                progress.cancel.set()
+            stage, done, total = progress.snapshot()
+            if not progress.cancel.is_set():
+                dialog.setLabelText(f"{title}: {stage} ({done} of {total})")
+            dialog.setValue(min(BAR_STEPS - 1, BAR_STEPS * done // total))
+            QtGui.QApplication.processEvents()
+    finally:
+        dialog.close()
+        dialog.deleteLater()
+    error = outcome.get("error")
+    if error is not None:
+        if progress.cancel.is_set() and isinstance(error, meshing.load_tquad().Cancelled):
+            return None
+        raise error
+    return outcome.get("result")
