@@ -142,7 +142,7 @@ class WorkbenchGuiTest(unittest.TestCase):
             panel.max_size.setValue(3.0)
             self.assertTrue(panel.apply())
             self.assertTrue(panel.accept())
-            self.assertEqual(len(runs), 1, "Apply then OK with the same values: one mesh")
+            self.assertEqual(len(runs), 1, "Mesh then OK with the same values: one mesh")
         finally:
             meshing.mesh_shape = mesh_shape
 
@@ -220,10 +220,14 @@ class WorkbenchGuiTest(unittest.TestCase):
         self.assertFalse(mesh.Incomplete, list(mesh.RefusedFaces))
         self.assertEqual(len(mesh.TemplateTrees), len(part.Shape.Faces), "every face meshed")
         self.assertFalse(part.ViewObject.Visibility, "the part is hidden behind its mesh")
-        panel = FreeCADGui.Control.activeDialog() and self._panel_widget()
+        dock = self._panel_widget()
+        self.assertIsNotNone(dock, "the task panel is shown in the combo view")
+        forms = [w for w in dock.findChildren(QtGui.QWidget) if w.windowTitle() == "Template quad mesh"]
+        self.assertEqual(len(forms), 1, "the panel's form")
+        self.assertLessEqual(forms[0].minimumSizeHint().width(), dock.width() - 40,
+                             "the panel fits the combo view's default width without clipping")
         self._save_view("freecad_part.png")
-        if panel is not None:
-            self._save_widget(panel, "freecad_task_panel.png")
+        self._save_widget(dock, "freecad_task_panel.png")
         from freecad.templatequad.view_provider import show_quality
         # (FreeCAD 0.20 cannot read ElementColor back: the picture is the check.)
         self.assertTrue(show_quality(mesh.ViewObject, True), "colours from the last mesh")
@@ -244,8 +248,8 @@ class WorkbenchGuiTest(unittest.TestCase):
             if not dialogs:
                 QtCore.QTimer.singleShot(100, cancel)
                 return
-            if screenshot:  # the whole screen: the dialog is a window of its own
-                QtGui.QApplication.primaryScreen().grabWindow(0).save(screenshot)
+            if screenshot:
+                dialogs[0].grab().save(screenshot)
             dialogs[0].cancel()
             seen.append(True)
 

@@ -92,7 +92,9 @@ class QualityColoursTest(unittest.TestCase):
         colours = qc.element_colours([1.0, 0.1])
         self.assertEqual(sorted(colours), [1, 2], "FemMesh element ids start at 1")
         self.assertEqual(colours[2], red)
-        self.assertEqual(len(qc.HISTOGRAM_LABELS), 11, "as tquad's jacobian_histogram")
+        self.assertEqual(qc.histogram_band_colour(0), qc.INVERTED, "band 0: below 0")
+        for got, want in zip(qc.histogram_band_colour(10), qc.quality_colour(0.95)):
+            self.assertAlmostEqual(got, want, 12, msg="band 10: [0.9, 1], at 0.95")
 
 
 class MeshObjectTest(unittest.TestCase):

@@ -4,15 +4,12 @@ Red at 0.2 and below (a quad that poor spoils the stresses around it), through y
 at 0.6, to green at 1 (a square); inverted quads (below 0) purple, which the mesher
 never writes unless told to. Pure functions, so the mapping is tested headless.
 """
-from typing import Dict, List, Sequence, Tuple
+from typing import Dict, Sequence, Tuple
 
 Colour = Tuple[float, float, float]
 
 INVERTED: Colour = (0.55, 0.0, 0.55)
 _STOPS = ((0.2, (0.85, 0.0, 0.0)), (0.6, (0.95, 0.85, 0.0)), (1.0, (0.0, 0.65, 0.0)))
-
-#: The histogram's bands (tquad's jacobian_histogram): below 0, then tenths of [0, 1].
-HISTOGRAM_LABELS: List[str] = ["< 0"] + [f"{k / 10:.1f}" for k in range(10)]
 
 
 def quality_colour(scaled_jacobian: float) -> Colour:
@@ -29,7 +26,8 @@ def quality_colour(scaled_jacobian: float) -> Colour:
 
 
 def histogram_band_colour(band: int) -> Colour:
-    """histogram_band_colour(): the colour of histogram band k (0 = below 0), at its middle."""
+    """histogram_band_colour(): the colour of band k of tquad's jacobian_histogram
+    (0: below 0, then the tenths of [0, 1]), at the band's middle."""
     return INVERTED if band == 0 else quality_colour((band - 1) / 10 + 0.05)
 
 

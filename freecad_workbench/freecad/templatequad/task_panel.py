@@ -8,8 +8,8 @@ size, element order), then smoothing, corner choice, per-face corners, keep goin
 and accepting an incomplete mesh; the template details (T4 ratio, template trees,
 every refusal's reason) sit in a folded "Advanced" section.
 
-Apply re-meshes (an undoable step) when a value changed; OK applies the same way and
-closes; Cancel restores the values the panel opened with and re-meshes if Apply had
+"Mesh" re-meshes (an undoable step) when a value changed; OK does the same and
+closes; Cancel restores the values the panel opened with and re-meshes if "Mesh" had
 changed them. A mesh cancelled from its progress dialog leaves the previous mesh and
 values.
 """
@@ -19,14 +19,14 @@ from PySide import QtCore, QtGui  # FreeCAD's shim: QtGui also holds the widgets
 
 from . import paths
 from .mesh_object import ELEMENT_ORDERS
-from .quality_colours import HISTOGRAM_LABELS, histogram_band_colour
+from .quality_colours import histogram_band_colour
 from .view_provider import show_quality, showing_quality
 
 #: The properties the panel edits, in the order of _values().
 _INPUT_NAMES = ("CharacteristicLengthMax", "CharacteristicLengthMin", "ElementOrder",
                 "Smooth", "BestCorners", "Corners", "KeepGoing", "AcceptIncomplete",
                 "T4Ratio")
-_CORNER_CHOICES = ("Automatic", "Best of several (slower)")
+_CORNER_CHOICES = ("Automatic", "Best (slower)")
 
 
 class QualityHistogram(QtGui.QWidget):
@@ -36,7 +36,8 @@ class QualityHistogram(QtGui.QWidget):
         super().__init__()
         self.counts = []
         self.setMinimumHeight(70)
-        self.setToolTip("Quads per scaled Jacobian band (1 = a square, below 0 = inverted)")
+        self.setToolTip("Quads per scaled Jacobian band: below 0 (inverted), then tenths "
+                        "from 0 to 1 (a square)")
 
     def set_counts(self, counts):
         self.counts = list(counts)
@@ -59,9 +60,11 @@ class QualityHistogram(QtGui.QWidget):
             painter.fillRect(x + 1, height - label_height - bar_height, max(1, int(bar_width) - 2),
                              bar_height, QtGui.QColor(int(255 * r), int(255 * g), int(255 * b)))
         painter.setPen(self.palette().color(QtGui.QPalette.WindowText))
-        for band in (0, 1, bands - 1):  # "< 0", "0.0" and "0.9" are enough to read it
-            painter.drawText(int(band * bar_width), height - label_height, int(bar_width) + 8,
-                             label_height, QtCore.Qt.AlignLeft, HISTOGRAM_LABELS[band])
+        # The scale under the bars: 0 where [0, 0.1) starts, 1 at the right end (the
+        # first band, below 0, is the inverted quads: the tooltip says so).
+        painter.drawText(int(bar_width), height - label_height, width, label_height,
+                         QtCore.Qt.AlignLeft, "0")
+        painter.drawText(0, height - label_height, width, label_height, QtCore.Qt.AlignRight, "1")
 
 
 class TemplateQuadTaskPanel:
@@ -78,12 +81,10 @@ class TemplateQuadTaskPanel:
 
     # --- FreeCAD task dialog interface -------------------------------------------------
     def getStandardButtons(self):
+        # OK and Cancel only: a third standard button does not fit FreeCAD's default
+        # panel width (it clipped the panel); "Mesh" in the form applies.
         buttons = QtGui.QDialogButtonBox
-        return int(buttons.Ok | buttons.Apply | buttons.Cancel)
-
-    def clicked(self, button):
-        if button == int(QtGui.QDialogButtonBox.Apply):
-            self.apply()
+        return int(buttons.Ok | buttons.Cancel)
 
     def accept(self):
         """OK: apply (only if something changed); close unless the mesh failed."""
@@ -103,7 +104,7 @@ class TemplateQuadTaskPanel:
     def apply(self) -> bool:
         """Write the panel's values to the object and re-mesh; True if it is meshed.
 
-        Nothing is re-meshed when the values are those already meshed (Apply then OK
+        Nothing is re-meshed when the values are those already meshed ("Mesh" then OK
         meshes once). A mesh cancelled by the user restores the values it replaced.
         """
         values = self._values()
@@ -200,7 +201,6 @@ class TemplateQuadTaskPanel:
         o = self.obj
         error = getattr(o.Proxy, "last_error", "")
         used = o.ElementSizeUsed.Value
-        self.max_size.setSpecialValueText(f"automatic ({used:.3g} mm)" if used > 0 else "automatic")
         refused = list(o.RefusedFaceNames)
         if error:
             self.summary.setText(f"<span style='color:#b00'>Not meshed.</span> {error}")
@@ -214,9 +214,9 @@ class TemplateQuadTaskPanel:
         self.refused_box.setVisible(bool(refused))
         if refused:
             self.refused_label.setText(
-                f"<span style='color:#b60'>Incomplete: {len(refused)} face(s) not "
-                f"meshed: {', '.join(refused[:6])}{' ...' if len(refused) > 6 else ''}.</span> "
-                "The solver stops on this mesh unless 'Solve with holes' is on.")
+                f"<span style='color:#b60'>Incomplete: {', '.join(refused[:6])}"
+                f"{' ...' if len(refused) > 6 else ''} not meshed.</span> The solver stops "
+                "on this mesh unless 'Solve with holes' is on; Advanced lists why.")
         self.histogram.set_counts(o.QualityHistogram)
         self.quality_colours.setChecked(showing_quality(o.ViewObject))
         details = list(o.RefusedFaces) + list(o.TemplateTrees)
@@ -242,13 +242,14 @@ class TemplateQuadTaskPanel:
         self.refused_label = QtGui.QLabel()
         self.refused_label.setWordWrap(True)
         refused_layout.addWidget(self.refused_label)
-        select = QtGui.QPushButton("Select the faces not meshed")
+        select = QtGui.QPushButton("Select them")
+        select.setToolTip("Select the faces not meshed on the part, in the 3D view")
         select.clicked.connect(self.select_refused_faces)
         refused_layout.addWidget(select)
         box.addWidget(self.refused_box)
         self.histogram = QualityHistogram()
         box.addWidget(self.histogram)
-        self.quality_colours = QtGui.QCheckBox("Colour the mesh by quality")
+        self.quality_colours = QtGui.QCheckBox("Colour by quality")
         self.quality_colours.setToolTip("Each quad coloured by its scaled Jacobian: green "
                                         "1 (square), yellow 0.6, red 0.2 and below")
         self.quality_colours.toggled.connect(self.toggle_quality_colours)
@@ -258,6 +259,7 @@ class TemplateQuadTaskPanel:
         params = QtGui.QGroupBox("Mesh parameters")
         grid = QtGui.QFormLayout(params)
         grid.setFieldGrowthPolicy(QtGui.QFormLayout.AllNonFixedFieldsGrow)
+        grid.setRowWrapPolicy(QtGui.QFormLayout.WrapLongRows)
         self.max_size = self._length_box("Element size: the target edge length; 0 = "
                                          "automatic (bounding-box diagonal / 25)")
         grid.addRow("Max. size:", self.max_size)
@@ -269,8 +271,9 @@ class TemplateQuadTaskPanel:
         self.element_order.addItems(ELEMENT_ORDERS)
         self.element_order.setToolTip("1st: 4-node quadrilaterals (S4 shells in CalculiX); "
                                       "second order is not available yet")
-        grid.addRow("Element order:", self.element_order)
-        self.smooth = QtGui.QCheckBox("Smooth (better-shaped elements)")
+        grid.addRow("Order:", self.element_order)
+        self.smooth = QtGui.QCheckBox("Smooth")
+        self.smooth.setToolTip("Move interior nodes on the surfaces to better-shaped quads")
         grid.addRow(self.smooth)
         self.corner_choice = QtGui.QComboBox()
         self.corner_choice.addItems(_CORNER_CHOICES)
@@ -282,15 +285,23 @@ class TemplateQuadTaskPanel:
                                 "vertices where the face's sides begin)")
         self.corners.setMaximumHeight(54)
         grid.addRow("Per face:", self.corners)
-        pick = QtGui.QPushButton("Add face corners from selection")
+        pick = QtGui.QPushButton("Add from selection")
+        pick.setToolTip("Select a face and its 2 to 4 corner vertices (Ctrl+click), then "
+                        "press to add a line for that face")
         pick.clicked.connect(self.add_corners_from_selection)
         grid.addRow(pick)
-        self.keep_going = QtGui.QCheckBox("Mesh the other faces when one fails")
+        self.keep_going = QtGui.QCheckBox("Skip faces that fail")
+        self.keep_going.setToolTip("Mesh the other faces when one cannot be meshed "
+                                   "(the mesh is then incomplete)")
         grid.addRow(self.keep_going)
-        self.accept_incomplete = QtGui.QCheckBox("Solve with holes (faces not meshed)")
+        self.accept_incomplete = QtGui.QCheckBox("Solve with holes")
         self.accept_incomplete.setToolTip("Let CalculiX run on this mesh although faces "
                                           "were not meshed")
         grid.addRow(self.accept_incomplete)
+        remesh = QtGui.QPushButton("Mesh")
+        remesh.setToolTip("Mesh with these parameters now (OK does too, then closes)")
+        remesh.clicked.connect(self.apply)
+        grid.addRow(remesh)
         layout.addWidget(params)
 
         advanced_toggle = QtGui.QToolButton()
