@@ -53,7 +53,7 @@ tally() {
 
 common_env=(FREECAD_USER_HOME="$home" TQ_TEST_DIR="$here" TQ_CLI="${TQ_CLI:-$repo/build/bin/tquad}")
 
-for test_module in test_headless test_fem_plate; do
+for test_module in test_headless test_fem_plate test_u_channel; do
   echo "=== $test_module (freecadcmd) ==="
   result="$home/$test_module.json"
   env "${common_env[@]}" TQ_TEST_MODULES="$test_module" TQ_RESULT_FILE="$result" \
