@@ -16,9 +16,10 @@ from . import paths
 
 TQUAD_MISSING_MESSAGE = (
     "TemplateQuad: the Python module 'tquad' was not found or does not load ({error}). "
-    "It is built by the project's CMake build (target tquad_python, into build/python/tquad) "
-    "and copied into the add-on by freecad_workbench/install.sh; build it, then run "
-    "install.sh again.\n")
+    "The Debian package templatequad installs it with the workbench; from a source "
+    "tree, it is built by the project's CMake build (target tquad_python, into "
+    "build/python/tquad) and copied into the add-on by freecad_workbench/install.sh; "
+    "build it, then run install.sh again.\n")
 
 
 class TquadMissing(ImportError):
