@@ -148,7 +148,8 @@ class WorkbenchGuiTest(unittest.TestCase):
 
     def test_cancelled_long_run_leaves_the_document_as_it_was(self):
         """A 1.5 million quad mesh, cancelled from its progress dialog: through the
-        command no object is added; through the panel the old values and mesh stay."""
+        command no object is added; through the panel or a property set and recompute,
+        the old values and mesh stay."""
         from freecad.templatequad.task_panel import TemplateQuadTaskPanel
 
         part = self.doc.addObject("Part::Box", "BigBox")
@@ -186,6 +187,15 @@ class WorkbenchGuiTest(unittest.TestCase):
         self.assertEqual(mesh.FemMesh.FaceCount, before, "the previous mesh is kept")
         self.assertNotIn("Touched", mesh.State, "nothing left to recompute")
         self.assertIn("Cancelled", panel.summary.text())
+
+        # The same through the property editor (a property set, then recompute).
+        mesh.CharacteristicLengthMax = 0.2
+        seen = self._cancel_progress_dialog_after(450)
+        self.doc.recompute()
+        self.assertTrue(seen, "the progress dialog was shown and cancelled")
+        self.assertEqual(mesh.CharacteristicLengthMax.Value, 20.0,
+                         "the size of the mesh kept is put back")
+        self.assertEqual(mesh.FemMesh.FaceCount, before, "the previous mesh is kept")
 
     def test_large_meshes_are_drawn_without_their_edges(self):
         from freecad.templatequad import make_mesh

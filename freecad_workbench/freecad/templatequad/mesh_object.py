@@ -122,6 +122,7 @@ class TemplateQuadMesh(StatelessProxy):
         self.last_error = ""
         self.cancelled = False
         self.scaled_jacobian = None
+        self.meshed_inputs = None
         solver_guard.install()
 
     def onDocumentRestored(self, obj):
@@ -129,6 +130,7 @@ class TemplateQuadMesh(StatelessProxy):
         self.cancelled = False
         self.scaled_jacobian = None
         add_properties(obj)
+        self._remember_meshed_inputs(obj)  # the saved mesh was made with the saved inputs
         solver_guard.install()
 
     def execute(self, obj):
@@ -143,21 +145,22 @@ class TemplateQuadMesh(StatelessProxy):
         self.cancelled = False
         try:
             mesh = self._mesh(obj)
-            if mesh is None:
+            if mesh is None:  # the user cancelled: the mesh and its inputs stay as they were
                 self.cancelled = True
+                self._restore_meshed_inputs(obj)
                 return
             if mesh.refused_faces and not obj.KeepGoing:
                 raise ValueError(meshing.refusal_error(mesh))
         except meshing.TquadMissing as error:
             self.last_error = str(error).strip()
             self._clear(obj)
-            self.scaled_jacobian = None
+            self.scaled_jacobian = self.meshed_inputs = None
             FreeCAD.Console.PrintError(self.last_error + "\n")
             raise
         except ValueError as error:
             self.last_error = meshing.explain_tquad_error(str(error).strip())
             self._clear(obj)
-            self.scaled_jacobian = None
+            self.scaled_jacobian = self.meshed_inputs = None
             FreeCAD.Console.PrintError(f"TemplateQuad: {obj.Label}: {self.last_error}\n")
             raise
 
@@ -172,6 +175,19 @@ class TemplateQuadMesh(StatelessProxy):
         obj.QualityHistogram = [int(n) for n in mesh.quality["jacobian_histogram"]]
         obj.ElementSizeUsed = float(mesh.edge_size or 0.0)
         self.scaled_jacobian = mesh.scaled_jacobian  # per quad, for the colour map (not saved)
+        self._remember_meshed_inputs(obj)
+
+    def _remember_meshed_inputs(self, obj):
+        """The inputs the current mesh was made with (restored by a cancelled re-mesh)."""
+        self.meshed_inputs = {name: getattr(obj, name) for _, name, _ in _INPUTS}
+
+    def _restore_meshed_inputs(self, obj):
+        """A cancelled re-mesh (from the panel, the property editor or a script) puts
+        back the inputs of the mesh kept, so the object never shows inputs its mesh was
+        not made with. A new object has none: its creator removes it."""
+        for name, value in (getattr(self, "meshed_inputs", None) or {}).items():
+            if getattr(obj, name) != value:
+                setattr(obj, name, value)
         for line in obj.RefusedFaces:
             FreeCAD.Console.PrintWarning(
                 f"TemplateQuad: {obj.Label}: {obj.Part.Label} {line} (not meshed)\n")
