@@ -100,6 +100,26 @@ class WorkbenchGuiTest(unittest.TestCase):
                          "only the selected faces are meshed")
         self.assertEqual(mesh.FemMesh.QuadrangleCount, mesh.FemMesh.FaceCount, "all quads")
 
+    def test_a_click_meshes_what_it_can_and_selects_the_faces_it_could_not(self):
+        sphere = Part.makeSphere(10)  # a face the mesher does not handle
+        square = Part.makePlane(20, 20, FreeCAD.Vector(200, 0, 0))
+        part = self.doc.addObject("Part::Feature", "SphereAndSquare")
+        part.Shape = Part.makeCompound(sphere.Faces + [square])
+        self.doc.recompute()
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(self.doc.Name, part.Name)
+        FreeCADGui.runCommand(COMMAND)
+        _process_events()
+        mesh = self._mesh_objects()[0]
+        self.assertTrue(mesh.Incomplete, "the square is meshed, the sphere is not")
+        self.assertEqual(list(mesh.RefusedFaceNames), ["Face1"])
+        self.assertEqual(mesh.FemMesh.QuadrangleCount, mesh.FemMesh.FaceCount)
+        self.assertGreater(mesh.FemMesh.FaceCount, 0)
+        self.assertTrue(part.ViewObject.Visibility, "the part stays shown where it has holes")
+        selected = [(s.Object.Name, list(s.SubElementNames))
+                    for s in FreeCADGui.Selection.getSelectionEx()]
+        self.assertEqual(selected, [(part.Name, ["Face1"])], "the refused face is selected")
+
     def test_task_panel_apply_and_cancel(self):
         from freecad.templatequad import make_mesh
         from freecad.templatequad.task_panel import TemplateQuadTaskPanel

@@ -70,9 +70,11 @@ class MeshCommand:
             return
         doc.openTransaction("Template quad mesh")
         try:
-            # No raise: a refused mesh still gets its object and task panel, where the
-            # user sees why and can change the size or corners.
-            mesh = make_mesh(doc, part, faces=faces, raise_on_error=False)
+            # A click meshes what it can: faces that fail are left out, selected in the
+            # 3D view and named in the panel, and the incomplete mesh cannot reach the
+            # solver unnoticed (solver_guard). No raise: a failed mesh still gets its
+            # object and task panel, where the user sees why.
+            mesh = make_mesh(doc, part, faces=faces, keep_going=True, raise_on_error=False)
             if mesh is None:  # cancelled in the progress dialog: nothing was added
                 doc.abortTransaction()
                 return
