@@ -103,14 +103,7 @@ class WorkbenchGuiTest(unittest.TestCase):
     def test_a_click_meshes_what_it_can_and_selects_the_faces_it_could_not(self):
         sphere = Part.makeSphere(10)  # a face the mesher does not handle
         square = Part.makePlane(20, 20, FreeCAD.Vector(200, 0, 0))
-        part = self.doc.addObject("Part::Feature", "SphereAndSquare")
-        part.Shape = Part.makeCompound(sphere.Faces + [square])
-        self.doc.recompute()
-        FreeCADGui.Selection.clearSelection()
-        FreeCADGui.Selection.addSelection(self.doc.Name, part.Name)
-        FreeCADGui.runCommand(COMMAND)
-        _process_events()
-        mesh = self._mesh_objects()[0]
+        part, mesh = self._click_mesh("SphereAndSquare", Part.makeCompound(sphere.Faces + [square]))
         self.assertTrue(mesh.Incomplete, "the square is meshed, the sphere is not")
         self.assertEqual(list(mesh.RefusedFaceNames), ["Face1"])
         self.assertEqual(mesh.FemMesh.QuadrangleCount, mesh.FemMesh.FaceCount)
@@ -239,14 +232,7 @@ class WorkbenchGuiTest(unittest.TestCase):
                             "shared", "data", "cad", "918_pump_carter_sup_21_03_2006.stp")
         if not os.path.isfile(path):
             self.skipTest(f"{path} is not on this machine")
-        part = self.doc.addObject("Part::Feature", "Pump")
-        part.Shape = Part.read(path)
-        self.doc.recompute()
-        FreeCADGui.Selection.clearSelection()
-        FreeCADGui.Selection.addSelection(self.doc.Name, part.Name)
-        FreeCADGui.runCommand(COMMAND)
-        _process_events()
-        mesh = self._mesh_objects()[0]
+        part, mesh = self._click_mesh("Pump", Part.read(path))
         self.assertFalse(mesh.Incomplete, list(mesh.RefusedFaces))
         self.assertEqual(len(mesh.TemplateTrees), len(part.Shape.Faces), "every face meshed")
         self.assertFalse(part.ViewObject.Visibility, "the part is hidden behind its mesh")
@@ -266,6 +252,17 @@ class WorkbenchGuiTest(unittest.TestCase):
         self.assertTrue(show_quality(mesh.ViewObject, False))
 
     # --- helpers ----------------------------------------------------------------------
+    def _click_mesh(self, name, shape):
+        """A Part feature of shape, selected, meshed by the command: (part, mesh)."""
+        part = self.doc.addObject("Part::Feature", name)
+        part.Shape = shape
+        self.doc.recompute()
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(self.doc.Name, part.Name)
+        FreeCADGui.runCommand(COMMAND)
+        _process_events()
+        return part, self._mesh_objects()[0]
+
     def _cancel_progress_dialog_after(self, milliseconds, screenshot=None):
         """Press Cancel on the progress dialog once it is up; returns a list that gets
         True when it was found."""
