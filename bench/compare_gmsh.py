@@ -49,22 +49,13 @@ def peak_rss_bytes():
 def gmsh_case(spec):
     """Meshes one case in this process and prints one JSON line."""
     import gmsh
+    from gmsh_rectangle import quiet_single_thread, rectangle
 
     counts, width, height = spec["counts"], spec["width"], spec["height"]
     gmsh.initialize([], False)
     try:
-        gmsh.option.setNumber("General.Terminal", 0)
-        gmsh.option.setNumber("General.AbortOnError", 0)  # default aborts the process
-        gmsh.option.setNumber("General.NumThreads", 1)    # compare single-threaded
-        gmsh.model.add("rect")
-        geo = gmsh.model.geo
-        corners = [(0, 0), (width, 0), (width, height), (0, height)]
-        pts = [geo.addPoint(x, y, 0) for x, y in corners]
-        lines = [geo.addLine(pts[i], pts[(i + 1) % 4]) for i in range(4)]
-        surface = geo.addPlaneSurface([geo.addCurveLoop(lines)])
-        geo.synchronize()
-        for line, n in zip(lines, counts):
-            gmsh.model.mesh.setTransfiniteCurve(line, n + 1)  # nodes = segments + 1
+        quiet_single_thread(gmsh)
+        lines, surface = rectangle(gmsh, width, height, counts)
         if spec["route"] == "transfinite":
             gmsh.model.mesh.setTransfiniteSurface(surface)
         else:

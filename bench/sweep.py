@@ -258,21 +258,14 @@ def gmsh_case(spec):
     """Runs in the child: meshes one Gmsh route, writes spec["output"], prints one JSON."""
     import gmsh
 
+    from gmsh_rectangle import quiet_single_thread, rectangle
+
     counts, route = spec["counts"], spec["route"]
     gmsh.initialize([], False)
-    gmsh.option.setNumber("General.Terminal", 0)
-    gmsh.option.setNumber("General.AbortOnError", 0)  # the default aborts the process
-    gmsh.option.setNumber("General.NumThreads", 1)
+    quiet_single_thread(gmsh)
     gmsh.logger.start()
-    geo = gmsh.model.geo
-    corners = [(0, 0), (WIDTH, 0), (WIDTH, HEIGHT), (0, HEIGHT)]
-    points = [geo.addPoint(x, y, 0) for x, y in corners]
-    lines = [geo.addLine(points[i], points[(i + 1) % 4]) for i in range(4)]
-    surface = geo.addPlaneSurface([geo.addCurveLoop(lines)])
-    geo.synchronize()
     halve = route == "subdivision"  # subdivision doubles every boundary segment
-    for line, n in zip(lines, counts):
-        gmsh.model.mesh.setTransfiniteCurve(line, (n // 2 if halve else n) + 1)  # nodes
+    lines, surface = rectangle(gmsh, WIDTH, HEIGHT, [n // 2 if halve else n for n in counts])
     if route == "transfinite":
         gmsh.model.mesh.setTransfiniteSurface(surface)
     else:

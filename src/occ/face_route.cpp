@@ -22,10 +22,18 @@ namespace tquad {
 namespace {
 
 // A face whose quads stay inverted.
-struct InvertedQuadsError : InputError {
-  InvertedQuadsError(const std::string& message, std::size_t quads) : InputError(message), quads(quads) {}
+struct InvertedQuadsError : FaceRefusalError {
+  InvertedQuadsError(const std::string& message, std::size_t quads)
+      : FaceRefusalError(RefusalCode::inverted_quads, message), quads(quads) {}
   std::size_t quads;  // in the face's best mesh
 };
+
+// The refusal code of what a meshing route threw: the code it carries, cannot_mesh for
+// any other wrong input, internal for anything else (the mesher's own failure).
+RefusalCode refusal_code_of(const std::exception& e) {
+  if (const auto* known = dynamic_cast<const FaceRefusalError*>(&e)) return known->code();
+  return dynamic_cast<const InputError*>(&e) ? RefusalCode::cannot_mesh : RefusalCode::internal;
+}
 
 // Finer edges may cure a face meshed with at most this many quads: a small curved face
 // of a few segments cannot be meshed on its surface however its nodes move. Larger
@@ -97,8 +105,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
   RefusalCode refusal_code = RefusalCode::cannot_mesh;
   const auto note_refusal = [&](const std::exception& e) {
     refusal = e.what();
-    refusal_code = dynamic_cast<const InputError*>(&e) == nullptr ? RefusalCode::internal : RefusalCode::cannot_mesh;
-    if (const auto* known = dynamic_cast<const FaceRefusalError*>(&e)) refusal_code = known->code();
+    refusal_code = refusal_code_of(e);
   };
   const bool pole = boundary.has_degenerate_edge || boundary.polar;
   if (boundary.inner_wires > 0 && pole) throw FaceRefusalError(RefusalCode::not_supported, name + " has a hole and a pole; not supported yet");
@@ -229,15 +236,11 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
     }
     outcome.mesh = best_face_mesh(index, f, outcome.boundary, sector ? &*sector : nullptr, nodes, options, size);
     outcome.ok = true;
-  } catch (const InvertedQuadsError& e) {
-    outcome.reason = e.what();
-    outcome.code = RefusalCode::inverted_quads;
-    outcome.finer_edges_may_help = e.quads <= kRefinableQuads;
-  } catch (const FaceRefusalError& e) {
-    outcome.reason = e.what();
-    outcome.code = e.code();
   } catch (const InputError& e) {
     outcome.reason = e.what();
+    outcome.code = refusal_code_of(e);
+    const auto* inverted = dynamic_cast<const InvertedQuadsError*>(&e);
+    outcome.finer_edges_may_help = inverted && inverted->quads <= kRefinableQuads;
   } catch (const std::bad_alloc&) {
     outcome.reason = std::string("face ") + std::to_string(f) + ": internal failure: out of memory";
     outcome.code = RefusalCode::internal;

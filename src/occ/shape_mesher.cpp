@@ -211,6 +211,12 @@ class ShapeMeshContext {
   void index_faces() {
     meshed_ = meshed_faces(index_, options_.faces);
     const double diagonal = shape_diagonal(shape_);  // checked even when the size is given
+    if (options_.size > 0 && options_.min_size > options_.size) {
+      char text[96];
+      std::snprintf(text, sizeof text, "the minimum element size (%g) is larger than the element size (%g)",
+                    options_.min_size, options_.size);
+      throw InputError(text);
+    }
     result_.size = std::max(options_.size > 0 ? options_.size : diagonal / 25.0, options_.min_size);
     // Damaged faces (the reader's check, or an edge whose curve cannot be evaluated)
     // are refused before anything else looks at them; the rest is meshed without them.

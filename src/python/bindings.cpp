@@ -195,9 +195,6 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
   if (!(min_size >= 0) || !std::isfinite(min_size)) {
     throw InputError("min_size must be a finite number of 0 (no floor) or more, not " + std::to_string(min_size));
   }
-  if (size > 0 && min_size > size) {
-    throw InputError("min_size (" + std::to_string(min_size) + ") is larger than size (" + std::to_string(size) + ")");
-  }
   if (!(read_timeout >= kMinReadSeconds && read_timeout <= kMaxReadSeconds)) {
     throw InputError("read_timeout must be between 0.001 and 1e6 seconds, not " + std::to_string(read_timeout));
   }

@@ -278,7 +278,15 @@ class MeshObjectTest(unittest.TestCase):
         self.assertIn("not supported", error, "the refusal's code is worded")
         self.assertIn("KeepGoing", error, "says which property meshes the rest")
         self.assertNotIn("--", error, "no command-line option in a FreeCAD message")
-        mesh = make_mesh(self.doc, part, size=5.0, keep_going=True)
+        warnings = []
+        print_warning = FreeCAD.Console.PrintWarning
+        FreeCAD.Console.PrintWarning = lambda text: warnings.append(str(text))
+        try:
+            mesh = make_mesh(self.doc, part, size=5.0, keep_going=True)
+        finally:
+            FreeCAD.Console.PrintWarning = print_warning
+        self.assertTrue(any("SphereAndSquare Face1: " in w and "(not meshed)" in w for w in warnings),
+                        f"the refused face is reported in the report view: {warnings}")
         self.assertEqual(list(mesh.RefusedFaceNames), ["Face1"], "the refused face, by name")
         self.assertTrue(mesh.Incomplete, "a mesh with a refused face is incomplete")
         self.assertEqual(len(mesh.RefusedFaces), 1, "one refused face")
@@ -322,7 +330,7 @@ class MeshObjectTest(unittest.TestCase):
                          "no order is offered that the engine cannot make")
         with self.assertRaises(ValueError) as caught:
             make_mesh(self.doc, part, size=2.0, min_size=3.0)
-        self.assertIn("minimum element size (3 mm) is larger than the maximum (2 mm)",
+        self.assertIn("minimum element size (3) is larger than the element size (2)",
                       str(caught.exception))
 
     def test_files_saved_with_the_old_size_property_keep_their_size(self):

@@ -98,6 +98,12 @@ class MeshShapeTest(unittest.TestCase):
         for bad in (float("nan"), float("inf"), -1.0):
             with self.assertRaisesRegex(ValueError, "size must be a finite positive number"):
                 tquad.mesh_shape(path, size=bad)
+        # min_size floors the automatic size (the plate's diagonal / 25 is about 4.7).
+        self.assertEqual(tquad.mesh_shape(path, min_size=9.0).edge_size, 9.0)
+        with self.assertRaisesRegex(ValueError, r"minimum element size \(6\) is larger than the element size \(5\)"):
+            tquad.mesh_shape(path, size=5.0, min_size=6.0)
+        with self.assertRaisesRegex(ValueError, "min_size must be a finite number"):
+            tquad.mesh_shape(path, min_size=float("nan"))
         with tempfile.TemporaryDirectory() as folder:
             garbage = os.path.join(folder, "garbage.brep")
             with open(garbage, "w") as f:

@@ -119,19 +119,21 @@ class TemplateQuadMesh(StatelessProxy):
     def __init__(self, obj):
         obj.Proxy = self
         add_properties(obj)
-        self.last_error = ""
-        self.cancelled = False
-        self.scaled_jacobian = None
-        self.meshed_inputs = None
+        self._reset_runtime_state()
         solver_guard.install()
 
     def onDocumentRestored(self, obj):
-        self.last_error = ""
-        self.cancelled = False
-        self.scaled_jacobian = None
         add_properties(obj)
+        self._reset_runtime_state()
         self._remember_meshed_inputs(obj)  # the saved mesh was made with the saved inputs
         solver_guard.install()
+
+    def _reset_runtime_state(self):
+        """What the proxy knows between recomputes and never saves (StatelessProxy)."""
+        self.last_error = ""
+        self.cancelled = False
+        self.scaled_jacobian = None  # per quad, for the colour map
+        self.meshed_inputs = None  # the inputs the current mesh was made with
 
     def execute(self, obj):
         """Re-mesh: obj.Part's shape -> tquad -> obj.FemMesh, outputs, report view.
@@ -174,8 +176,11 @@ class TemplateQuadMesh(StatelessProxy):
         obj.ScaledJacobianMean = float(mesh.quality["scaled_jacobian"]["avg"])
         obj.QualityHistogram = [int(n) for n in mesh.quality["jacobian_histogram"]]
         obj.ElementSizeUsed = float(mesh.edge_size or 0.0)
-        self.scaled_jacobian = mesh.scaled_jacobian  # per quad, for the colour map (not saved)
+        self.scaled_jacobian = mesh.scaled_jacobian
         self._remember_meshed_inputs(obj)
+        for line in obj.RefusedFaces:
+            FreeCAD.Console.PrintWarning(
+                f"TemplateQuad: {obj.Label}: {obj.Part.Label} {line} (not meshed)\n")
 
     def _remember_meshed_inputs(self, obj):
         """The inputs the current mesh was made with (restored by a cancelled re-mesh)."""
@@ -188,9 +193,6 @@ class TemplateQuadMesh(StatelessProxy):
         for name, value in (getattr(self, "meshed_inputs", None) or {}).items():
             if getattr(obj, name) != value:
                 setattr(obj, name, value)
-        for line in obj.RefusedFaces:
-            FreeCAD.Console.PrintWarning(
-                f"TemplateQuad: {obj.Label}: {obj.Part.Label} {line} (not meshed)\n")
 
     def _mesh(self, obj):
         """The tquad mesh of the linked part (None when the user cancelled it).

@@ -120,13 +120,9 @@ def mesh_shape(shape, size: float = 0.0, faces: Optional[Sequence[int]] = None,
 
     Raises:
         TquadMissing: the module is not installed.
-        ValueError: tquad refused the shape or a face (message from tquad), or the
-            minimum size is above the maximum.
+        ValueError: tquad refused the shape, a face or the sizes (message from tquad).
         tquad.Cancelled: the progress callable asked to stop.
     """
-    if size > 0 and min_size > size:
-        raise ValueError(f"the minimum element size ({min_size:g} mm) is larger than the "
-                         f"maximum ({size:g} mm)")
     tquad = load_tquad()
     return tquad.mesh_shape(shape.exportBrepToString(), size=float(size), faces=faces,
                             corners=corners or None, keep_going=bool(keep_going),
@@ -254,7 +250,6 @@ _VERTICES = re.compile(r"\bvertices( \d+(?:(?:, | and )\d+)*)\b")
 # Command-line words in tquad's messages, as the FreeCAD object calls them.
 _CLI_WORDS = (
     (re.compile(r"\s*\(--keep-going meshes the other faces\)"), ""),
-    (re.compile(r"\s*\(keep_going=True meshes the other faces\)"), ""),
     (re.compile(r"a (larger|smaller) --size"), r"a \1 element size"),
     (re.compile(r" \(--max-quads\)"), ""),
     (re.compile(r"--size"), "the element size"),

@@ -164,10 +164,9 @@ class TemplateQuadTaskPanel:
 
     # --- helpers ----------------------------------------------------------------------
     def _inputs(self):
-        o = self.obj
-        return (o.CharacteristicLengthMax.Value, o.CharacteristicLengthMin.Value,
-                o.ElementOrder, o.Smooth, o.BestCorners, list(o.Corners), o.KeepGoing,
-                o.AcceptIncomplete, o.T4Ratio)
+        """The object's values of _INPUT_NAMES, lengths as plain millimetres."""
+        values = (getattr(self.obj, name) for name in _INPUT_NAMES)
+        return tuple(getattr(v, "Value", v) for v in values)
 
     def _values(self):
         corners = [line.strip() for line in self.corners.toPlainText().splitlines()

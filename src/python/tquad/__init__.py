@@ -151,7 +151,8 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
             the path of a .step/.stp, .iges/.igs or .brep file.
         size: target edge length; 0 uses the bounding-box diagonal / 25.
         min_size: the target edge length never goes below it, given or automatic
-            (0: no floor); curved and short edges may still get shorter segments.
+            (0: no floor; above a given size it is a ValueError); curved and short
+            edges may still get shorter segments.
         faces: indices of the faces to mesh (FreeCAD's ``Shape.Faces`` order); None
             meshes all.
         corners: per face index, the shape vertex indices where its curves begin.
