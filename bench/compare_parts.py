@@ -217,6 +217,27 @@ def failure(out, elapsed):
             "stderr": out.stderr.strip()[-300:]}
 
 
+def run_gmsh_command(path, size, timeout, workdir):
+    """The Blossom route through Gmsh's own command (`gmsh PART -2 -o PART.msh`): the
+    whole process a user waits for, to set beside tquad's whole process."""
+    msh = os.path.join(workdir, os.path.splitext(os.path.basename(path))[0] + ".msh")
+    cmd = ["gmsh", path, "-2", "-format", "msh41", "-o", msh, "-setnumber", "General.Terminal", "0",
+           "-setnumber", "Mesh.Algorithm", "6", "-setnumber", "Mesh.RecombineAll", "1",
+           "-setnumber", "Mesh.RecombinationAlgorithm", "1",
+           "-setnumber", "Mesh.MeshSizeMin", repr(size), "-setnumber", "Mesh.MeshSizeMax", repr(size)]
+    start = time.perf_counter()
+    try:
+        out = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return {"status": "timeout", "process_s": time.perf_counter() - start}
+    except OSError as error:
+        return {"status": "failed", "returncode": -1, "process_s": 0.0, "stderr": str(error)}
+    elapsed = time.perf_counter() - start
+    if out.returncode != 0 or not os.path.exists(msh):
+        return failure(out, elapsed)
+    return {"status": "ok", "process_s": elapsed}
+
+
 def gmsh_startup_seconds():
     """Wall time of a child that only starts Python and imports gmsh: the fixed part of
     every Gmsh process time."""
@@ -248,7 +269,12 @@ def run_tquad(tquad, path, size, timeout, workdir):
               "refused_faces": report["refused_faces"],
               "report_sj": {"min": report["quality"]["scaled_jacobian"]["min"],
                             "avg": report["quality"]["scaled_jacobian"]["avg"]},
-              "report_inverted": report["quality"].get("inverted", 0)}
+              "report_inverted": report["quality"].get("inverted", 0),
+              "stage_s": report.get("stage_seconds", {}),
+              "face_s": report.get("face_seconds", {})}
+    stages = result["stage_s"]
+    # Everything tquad timed after the reader's child process returned the shape.
+    result["after_read_s"] = sum(v for k, v in stages.items() if k != "read")
     result.update(vtu_quality(vtu))
     return result
 
@@ -282,6 +308,8 @@ def compare_part(path, args, workdir):
     for route in GMSH_ROUTES:
         log("%s: gmsh %s ..." % (name, route))
         row[route] = run_gmsh(path, route, size, args.timeout)
+    log("%s: gmsh command (Blossom) ..." % name)
+    row["gmsh_command"] = run_gmsh_command(path, size, args.timeout, workdir)
     return row
 
 
@@ -346,6 +374,50 @@ def markdown_table(rows):
     return "\n".join(lines)
 
 
+STAGE_COLUMNS = ("read", "index", "assign intervals", "discretize edges", "mesh faces",
+                 "assemble", "quality", "write")
+
+
+def geometric_mean(values):
+    return math.exp(sum(math.log(v) for v in values) / len(values)) if values else float("nan")
+
+
+def time_table(rows):
+    """tquad's time split by stage beside Gmsh's, and the ratios the speed targets name:
+    whole process against whole process (Gmsh's own command), and what follows reading
+    against Gmsh's generate(2)."""
+    header = (["file", "TQ whole"] + ["TQ " + s for s in STAGE_COLUMNS]
+              + ["TQ faces: meshing / smoothing (summed over threads)", "TQ after reading",
+                 "gmsh command whole", "Blossom generate(2)",
+                 "gmsh whole / TQ whole", "generate(2) / TQ after reading"])
+    lines = ["| " + " | ".join(header) + " |", "|---|" + "---:|" * (len(header) - 1)]
+    whole_ratios, after_ratios = [], []
+    for row in rows:
+        if "error" in row or row["tquad"]["status"] != "ok":
+            continue
+        tq, cmd, blossom = row["tquad"], row["gmsh_command"], row["blossom"]
+        stages = tq["stage_s"]
+        cells = [row["file"], "%.3f" % tq["process_s"]]
+        cells += ["%.3f" % stages[s] if s in stages else "-" for s in STAGE_COLUMNS]
+        cells.append("%.3f / %.3f" % (tq["face_s"].get("meshing", 0), tq["face_s"].get("smoothing", 0)))
+        cells.append("%.3f" % tq["after_read_s"])
+        whole = after = "-"
+        cells.append("%.3f" % cmd["process_s"] if cmd["status"] == "ok" else cmd["status"])
+        cells.append("%.3f" % blossom["generate_s"] if blossom["status"] == "ok" else blossom["status"])
+        if cmd["status"] == "ok":
+            whole_ratios.append(cmd["process_s"] / tq["process_s"])
+            whole = "%.2f" % whole_ratios[-1]
+        if blossom["status"] == "ok" and tq["after_read_s"] > 0:
+            after_ratios.append(blossom["generate_s"] / tq["after_read_s"])
+            after = "%.1f" % after_ratios[-1]
+        lines.append("| " + " | ".join(cells + [whole, after]) + " |")
+    summary = ("Geometric means: gmsh command whole / TQ whole %.2f over %d parts; "
+               "Blossom generate(2) / TQ after reading %.1f over %d parts."
+               % (geometric_mean(whole_ratios), len(whole_ratios),
+                  geometric_mean(after_ratios), len(after_ratios)))
+    return "\n".join(lines), summary
+
+
 def notes(rows, timeout):
     """One line per anomaly worth knowing when reading the table."""
     out = []
@@ -386,6 +458,8 @@ def notes(rows, timeout):
                 if r["sj"] and r["sj"]["inverted"]:
                     out.append("%s: Gmsh %s has %d quads with scaled Jacobian <= 0"
                                % (name, route, r["sj"]["inverted"]))
+        if row["gmsh_command"]["status"] != "ok":
+            out.append("%s: the gmsh command %s" % (name, row["gmsh_command"]["status"]))
     return out
 
 
@@ -466,6 +540,15 @@ def main():
           "and imports gmsh takes %.2f s." % (args.timeout, startup))
     for line in notes(rows, args.timeout):
         print("- " + line)
+    print()
+    table, summary = time_table(rows)
+    print("Time split (seconds, wall). TQ stages from its JSON report: 'read' is the reader's "
+          "child process (file, shape check, transfer back); 'after reading' is the sum of the "
+          "other stages (process start and exit not included). 'gmsh command' is Gmsh's own "
+          "program, Blossom route, same size, writing .msh.\n")
+    print(table)
+    print()
+    print(summary)
     print()
     print("Machine: %s, %s CPUs (nproc), %s. Date: %s. Total script time %.0f s."
           % (info["uname"], info["nproc"], info["cpu"], info["date"], total))

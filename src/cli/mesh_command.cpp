@@ -16,6 +16,7 @@
 
 #include "core/input_error.h"
 #include "core/boundary_region.h"
+#include "core/elapsed.h"
 #include "core/mesh_validation.h"
 #include "core/planar_self_intersection.h"
 #include "core/quality.h"
@@ -208,7 +209,9 @@ ShapeMesh mesh_shape_input(const MeshCommand& command, OutputFormat format, Qual
     }
   }
   options.corners = parse_corner_specs(corner_specs);
+  const auto reading = std::chrono::steady_clock::now();
   const ReadShape read = read_shape_isolated(command.input, command.read);
+  const double read_seconds = seconds_since(reading);
   const TopoDS_Shape& shape = read.shape;
   if (!command.faces.empty()) {
     TopTools_IndexedMapOfShape faces;
@@ -227,9 +230,13 @@ ShapeMesh mesh_shape_input(const MeshCommand& command, OutputFormat format, Qual
   } catch (const InputError& e) {
     throw InputError(command.input + ": " + e.what());
   }
+  // The reader's child process (file, shape check, transfer back) as a stage of its own.
+  result.stage_seconds["read"] = read_seconds;
   // Lee-Lo is signed by each quad's own normal; the scaled Jacobian is the occ
   // layer's, each corner against the face's outer normal at that corner.
+  const auto measuring = std::chrono::steady_clock::now();
   quality = measure_mesh_quality(result.mesh, std::nullopt);
+  result.stage_seconds["quality"] = seconds_since(measuring);
   return std::move(result.mesh);
 }
 
@@ -247,6 +254,7 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
   ShapeMeshResult shape_result;
   const ShapeMesh shape = kind == InputKind::boundary ? mesh_boundary_input(command, format, quality)
                                                       : mesh_shape_input(command, format, quality, shape_result, err);
+  const auto writing = std::chrono::steady_clock::now();
   switch (format) {
     case OutputFormat::json: write_mesh_json_file(command.output, shape); break;
     case OutputFormat::vtu: write_vtu_file(command.output, shape); break;
@@ -254,8 +262,8 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
     case OutputFormat::msh: write_msh_file(command.output, shape); break;
     case OutputFormat::svg: break;  // written with the boundary mesh
   }
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (kind == InputKind::shape) shape_result.stage_seconds["write"] = seconds_since(writing);
+  const double seconds = seconds_since(start);
 
   if (quality.inverted > 0) {
     err << "tquad: warning: " << quality.inverted << " of " << shape.quads.size()

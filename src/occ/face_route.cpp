@@ -9,6 +9,7 @@
 #include <optional>
 #include <unordered_map>
 
+#include "core/elapsed.h"
 #include "core/face_refusal.h"
 #include "core/input_error.h"
 #include "core/mesher.h"
@@ -187,12 +188,12 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     }
   }
   // Every candidate route counts, the rejected ones too.
-  best->meshing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  best->meshing_seconds = seconds_since(start);
   const bool seam = std::find(boundary.is_seam.begin(), boundary.is_seam.end(), 1) != boundary.is_seam.end();
   if (options.smooth) {
     const auto smoothing = std::chrono::steady_clock::now();
     smooth_face_mesh(index.face(f), seam, nodes, *best);
-    best->smoothing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - smoothing).count();
+    best->smoothing_seconds = seconds_since(smoothing);
   }
   if (natural && !replaced) natural = *best;  // the natural choice stayed (smoothed now)
   if (natural) {

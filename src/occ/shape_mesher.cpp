@@ -19,6 +19,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "core/elapsed.h"
 #include "core/input_error.h"
 #include "occ/edge_discretization.h"
 #include "occ/face_boundary.h"
@@ -193,7 +194,7 @@ class ShapeMeshContext {
       throw InputError(std::string("OpenCASCADE failed on the shape in stage '") + name + "': " + what +
                        " (a damaged file?)");
     }
-    result_.stage_seconds[name] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result_.stage_seconds[name] += seconds_since(start);
     throw_if_cancelled();
     report(name, 1, 1);
   }
