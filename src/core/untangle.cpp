@@ -75,7 +75,7 @@ class Untangler {
       // positions with the local max-min repair and keep the better outcome.
       std::vector<Vec3> smoothed = mesh_.nodes;
       mesh_.nodes = placed;
-      std::vector<NodeId> optimized = maximize_worst_corners(bad_quads());
+      std::vector<NodeId> optimized = maximize_worst_corners(bad_quads(), remaining);
       const std::size_t after = bad_quads().size();
       if (after <= remaining) {
         remaining = after;
@@ -135,17 +135,26 @@ class Untangler {
   // Local max-min repair: each node of the zone (the bad quads and two rings around)
   // moves, in its tangent plane, to raise the worst scaled Jacobian of the corners
   // its position decides, by a compass search whose step starts at a quarter of its
-  // shortest edge.
-  std::vector<NodeId> maximize_worst_corners(std::vector<int> bad) {
+  // shortest edge. Its outcome is kept only if it ends with at most `to_beat` bad
+  // quads (the Laplacian's), so it stops once it cannot get there even at its best
+  // rate so far: on a hopeless candidate of part.step at D/100 it spent 0.8 s taking
+  // 2,812 bad quads to 2,190, against the Laplacian's 214.
+  std::vector<NodeId> maximize_worst_corners(std::vector<int> bad, std::size_t to_beat) {
+    constexpr int kPasses = 30;
     Zone z = zone_around(bad);
     grow_ring(z);
     grow_ring(z);
     std::size_t fewest = bad.size();
-    for (int pass = 0, stalled = 0; pass < 30 && !bad.empty() && stalled < 3; ++pass) {
+    long long best_gain = 0;  // most bad quads repaired by one pass so far
+    for (int pass = 0, stalled = 0; pass < kPasses && !bad.empty() && stalled < 3; ++pass) {
       for (NodeId n : z.nodes) improve_node(n);
+      const long long before = static_cast<long long>(bad.size());
       bad = bad_quads();
       for (int k : bad) for (NodeId n : mesh_.quads[k]) add_to(z, n);
       if (bad.size() < fewest) { fewest = bad.size(); stalled = 0; } else { ++stalled; }
+      best_gain = std::max(best_gain, before - static_cast<long long>(bad.size()));
+      const long long passes_left = kPasses - pass - 1;
+      if (static_cast<long long>(bad.size()) > static_cast<long long>(to_beat) + best_gain * passes_left) break;
     }
     return z.nodes;
   }
