@@ -183,9 +183,16 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
                       FaceMeshResult& out) {
   const BRepAdaptor_Surface surface(face);
   const bool reversed = face.Orientation() == TopAbs_REVERSED;
-  std::vector<Vec3> normals(param.size());
-  for (std::size_t i = 0; i < param.size(); ++i) {
-    normals[i] = outer_normal(surface, reversed, polar ? polar_to_uv(*polar, param[i]) : param[i]);
+  std::vector<Vec3> normals;
+  if (surface.GetType() == GeomAbs_Plane && !param.empty()) {
+    // A plane's derivatives are its axes at every (u, v): one normal for all nodes
+    // (the same bits as evaluating it at each; most CAD faces are planes).
+    normals.assign(param.size(), outer_normal(surface, reversed, polar ? polar_to_uv(*polar, param[0]) : param[0]));
+  } else {
+    normals.resize(param.size());
+    for (std::size_t i = 0; i < param.size(); ++i) {
+      normals[i] = outer_normal(surface, reversed, polar ? polar_to_uv(*polar, param[i]) : param[i]);
+    }
   }
   check_on_surface(face, param, polar, xyz, std::move(normals), out);
 }
@@ -196,6 +203,7 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
   const BRepAdaptor_Surface surface(face);
   const bool reversed = face.Orientation() == TopAbs_REVERSED;
   const auto to_uv = [&](const Vec3& p) { return polar ? polar_to_uv(*polar, p) : p; };
+  const bool planar = surface.GetType() == GeomAbs_Plane;
   out.param = param;
   out.polar = polar;
   // Each corner is checked against the normal at its own node, so a quad warped on a
@@ -234,7 +242,7 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
     // across the surface it stands for (a tangential offset, as near a pole, does not
     // count).
     const double mean_length = norm(mean_normal);
-    if (mean_length > 0) {
+    if (mean_length > 0 && !planar) {  // on a plane the corners' centre lies on it
       const gp_Pnt p = surface.Value(to_uv(centre_param).x, to_uv(centre_param).y);
       const double off = std::abs(dot(centre - to_vec3(p), mean_normal)) / mean_length;
       const double diagonal = std::max(distance(corner[0], corner[2]), distance(corner[1], corner[3]));
