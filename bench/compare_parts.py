@@ -4,7 +4,7 @@
 Run with Debian's /usr/bin/python3 (it has python3-gmsh, meshio and numpy):
 
     /usr/bin/python3 bench/compare_parts.py [--cad-dir ../shared/data/cad] [--divisor 25]
-        [--timeout 300] [--files a.stp,b.brep] [--json out.json]
+        [--timeout 300] [--files a.stp,b.brep] [--json out.json] [--markdown bench/PARTS.md]
 
 For every part (*.stp, *.step, *.brep in the CAD directory):
   * the target edge size is H = bounding-box diagonal / divisor, the diagonal taken from
@@ -500,6 +500,7 @@ def main():
                         help="seconds allowed to each tquad and Gmsh process (default 300)")
     parser.add_argument("--files", help="comma-separated file names inside --cad-dir")
     parser.add_argument("--json", help="also write the raw numbers to this file")
+    parser.add_argument("--markdown", help="also append the report, as a markdown section, to this file")
     parser.add_argument("--tquad", default=TQUAD, help="tquad binary (default build/bin/tquad)")
     parser.add_argument("--gmsh-job", help=argparse.SUPPRESS)
     args = parser.parse_args()
@@ -525,34 +526,45 @@ def main():
     info = machine()
     version = next((r["gmsh_version"] for r in rows if "gmsh_version" in r), "?")
 
-    print("Whole CAD parts at H = bounding-box diagonal / %g (Gmsh's OCC bounding box), "
+    report = []
+
+    def say(text=""):
+        report.append(text)
+        print(text)
+
+    say("Whole CAD parts at H = bounding-box diagonal / %g (Gmsh's OCC bounding box), "
           "same H for both meshers.\n" % args.divisor)
-    print(markdown_table(rows))
-    print()
-    print("- TQ: `tquad mesh --keep-going --size H` (default threads: all cores). SJ min / mean "
+    say(markdown_table(rows))
+    say()
+    say("- TQ: `tquad mesh --keep-going --size H` (default threads: all cores). SJ min / mean "
           "recomputed from its .vtu; 'report' is its own JSON report.")
-    print("- Blossom: Gmsh %s, Mesh.Algorithm 6 + RecombineAll, Blossom; all-quad: the same "
+    say("- Blossom: Gmsh %s, Mesh.Algorithm 6 + RecombineAll, Blossom; all-quad: the same "
           "+ SubdivisionAlgorithm 1 at size 2H. Gmsh default threads (General.NumThreads 1). "
           "SJ over quads only." % version)
-    print("- Times in seconds, wall: TQ = whole process; Gmsh 'gen' = generate(2), 'proc' = "
+    say("- Times in seconds, wall: TQ = whole process; Gmsh 'gen' = generate(2), 'proc' = "
           "whole child process (Python, CAD import, meshing, mesh extraction). Ratios = Gmsh "
           "generate(2) alone / TQ whole process. Time limit %g s per process. A child that only starts Python "
           "and imports gmsh takes %.2f s." % (args.timeout, startup))
     for line in notes(rows, args.timeout):
-        print("- " + line)
-    print()
+        say("- " + line)
+    say()
     table, summary = time_table(rows)
-    print("Time split (seconds, wall). TQ stages from its JSON report: 'read' is the reader's "
+    say("Time split (seconds, wall). TQ stages from its JSON report: 'read' is the reader's "
           "child process (file, shape check, transfer back); 'after reading' is the sum of the "
           "other stages (process start and exit not included). 'gmsh command' is Gmsh's own "
           "program, Blossom route, same size, writing .msh.\n")
-    print(table)
-    print()
-    print(summary)
-    print()
-    print("Machine: %s, %s CPUs (nproc), %s. Date: %s. Total script time %.0f s."
+    say(table)
+    say()
+    say(summary)
+    say()
+    say("Machine: %s, %s CPUs (nproc), %s. Date: %s. Total script time %.0f s."
           % (info["uname"], info["nproc"], info["cpu"], info["date"], total))
 
+    if args.markdown:
+        with open(args.markdown, "a") as f:
+            f.write("## Whole parts at D/%g\n\nRegenerate: `/usr/bin/python3 bench/compare_parts.py --divisor %g "
+                    "--markdown FILE` (appends a section like this one).\n\n" % (args.divisor, args.divisor))
+            f.write("\n".join(report) + "\n\n")
     if args.json:
         with open(args.json, "w") as f:
             json.dump({"divisor": args.divisor, "timeout_s": args.timeout, "machine": info,

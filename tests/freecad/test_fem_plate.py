@@ -205,5 +205,53 @@ class PlateWithHoleTest(unittest.TestCase):
                                msg="the peak stress of the plate must be at the hole")
 
 
+class EverySolverCheckTest(unittest.TestCase):
+    """The Check task of every solver object of FreeCAD's FEM (CalculiX, Z88, Mystran,
+    Elmer) fails on an incomplete TemplateQuad mesh, naming the refused face, until
+    the mesh's AcceptIncomplete is set. Nothing is solved, so no solver is needed."""
+
+    def setUp(self):
+        self.doc = FreeCAD.newDocument("TemplateQuadSolvers")
+
+    def tearDown(self):
+        FreeCAD.closeDocument(self.doc.Name)
+
+    def test_an_incomplete_mesh_fails_every_solver_check_task(self):
+        import ObjectsFem
+        from femsolver import report
+        from freecad.templatequad import make_mesh
+
+        part = self.doc.addObject("Part::Feature", "Plate")
+        sphere = Part.makeSphere(5, FreeCAD.Vector(50, 300, 0))  # a face the mesher refuses
+        part.Shape = Part.makeCompound([Part.makePlane(100, WIDTH), sphere.Faces[0]])
+        analysis = ObjectsFem.makeAnalysis(self.doc, "Analysis")
+        mesh = make_mesh(self.doc, part, size=10.0, keep_going=True)
+        analysis.addObject(mesh)
+        self.doc.recompute()
+        self.assertTrue(mesh.Incomplete)
+        makers = {"CalculiX": ObjectsFem.makeSolverCalculix, "Z88": ObjectsFem.makeSolverZ88,
+                  "Mystran": ObjectsFem.makeSolverMystran, "Elmer": ObjectsFem.makeSolverElmer}
+        for name, make in makers.items():
+            solver = make(self.doc, name)
+            analysis.addObject(solver)
+            machine = solver.Proxy.createMachine(solver, tempfile.gettempdir())
+            for accepted in (False, True):
+                mesh.AcceptIncomplete = accepted
+                check = type(machine.check)()  # a fresh task of the solver's own Check class
+                check.solver = solver
+                check.report = report.Report()
+                check.run()
+                errors = "\n".join(check.report.errors)
+                with self.subTest(solver=name, accepted=accepted):
+                    if accepted:
+                        self.assertNotIn("incomplete", errors, f"{name}: accepted, no stop")
+                    else:
+                        self.assertTrue(check.failed, f"{name}'s Check task must fail")
+                        self.assertIn(f"The mesh {mesh.Label} is incomplete: Face2 of Plate", errors)
+                        self.assertEqual(errors.count("is incomplete"), 1, f"{name}: said once")
+            analysis.removeObject(solver)
+            self.doc.removeObject(solver.Name)
+
+
 if __name__ == "__main__":
     unittest.main()

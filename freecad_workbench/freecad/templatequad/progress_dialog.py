@@ -47,8 +47,9 @@ class _Progress:
 def run_with_progress(work, title: str):
     """run_with_progress(): work(progress) in a worker thread, a dialog meanwhile.
 
-    Returns work's result, or None when the user pressed Cancel (the mesher stopped
-    and nothing was changed). Any other exception of work is raised here.
+    Returns work's result, or None when the user pressed Cancel while the dialog was
+    up (the mesher stopped, or its result is dropped when it finished first; nothing
+    was changed). Any other exception of work is raised here.
     """
     progress = _Progress()
     outcome = {}
@@ -77,6 +78,8 @@ def run_with_progress(work, title: str):
                 dialog.setLabelText(f"{title}: {stage} ({done} of {total})")
             dialog.setValue(min(BAR_STEPS - 1, BAR_STEPS * done // total))
             QtGui.QApplication.processEvents()
+        if dialog.wasCanceled():  # pressed during the last events processed
+            progress.cancel.set()
     finally:
         dialog.close()
         dialog.deleteLater()
@@ -85,4 +88,8 @@ def run_with_progress(work, title: str):
         if progress.cancel.is_set() and isinstance(error, meshing.load_tquad().Cancelled):
             return None
         raise error
+    if progress.cancel.is_set():
+        # Cancel was pressed after the mesher's last look at it (its last stages and
+        # the hand-over have none): the user asked for the document as it was.
+        return None
     return outcome.get("result")

@@ -1,12 +1,18 @@
-"""Keep an incomplete TemplateQuad mesh from reaching the CalculiX solver unnoticed.
+"""Keep an incomplete TemplateQuad mesh from reaching a solver unnoticed.
 
-A mesh whose part had refused faces has holes where those faces are. CalculiX would
+A mesh whose part had refused faces has holes where those faces are. A solver would
 solve it without complaint, and a constraint on a refused face would quietly act on
-the nodes around its rim. FEM's CalculiX checks (the solver object's "Check" task and
-ccxtools' check_prerequisites) both call
-``femtools.checksanalysis.check_member_for_solver_calculix`` and stop on any message
-it returns; install() wraps that function so it also names every incomplete
-TemplateQuad mesh of the analysis, unless the mesh's AcceptIncomplete is set.
+the nodes around its rim. install() hooks FEM's checks at two places, each naming
+every incomplete TemplateQuad mesh of the analysis unless the mesh's
+AcceptIncomplete is set:
+
+- ``femtools.checksanalysis.check_member_for_solver_calculix``, which CalculiX's
+  checks (ccxtools' check_prerequisites and the CalculiX solver object's "Check"
+  task) call and stop on any message it returns;
+- ``femsolver.run.Check.check_mesh_exists``, which the "Check" task of every solver
+  object of FreeCAD 0.20 calls first (CalculiX, Z88, Mystran, Elmer): there the
+  task fails with the message as its report's error (CalculiX's own task is left
+  to the first hook, so it reports the message once).
 
 Installed lazily, by the mesh object itself (created or restored), so FreeCAD's
 start-up never imports the FEM modules for it.
@@ -58,14 +64,24 @@ def analysis_messages(analysis, mesh) -> str:
 
 
 def install() -> bool:
-    """install(): wrap FEM's CalculiX member check once; False when FEM is missing."""
+    """install(): hook FEM's solver checks once; False when FEM is missing."""
     try:
         from femtools import checksanalysis
     except ImportError:
         return False
+    _guard_calculix_member_check(checksanalysis)
+    try:
+        from femsolver import run
+    except ImportError:  # a FEM without the solver framework still has ccxtools
+        return True
+    _guard_solver_check_task(run.Check)
+    return True
+
+
+def _guard_calculix_member_check(checksanalysis) -> None:
     original = checksanalysis.check_member_for_solver_calculix
     if getattr(original, _WRAPPED_MARK, False):
-        return True
+        return
 
     def check_member_for_solver_calculix(analysis, solver, mesh, member):
         return original(analysis, solver, mesh, member) + analysis_messages(analysis, mesh)
@@ -73,4 +89,25 @@ def install() -> bool:
     setattr(check_member_for_solver_calculix, _WRAPPED_MARK, True)
     check_member_for_solver_calculix.__doc__ = original.__doc__
     checksanalysis.check_member_for_solver_calculix = check_member_for_solver_calculix
-    return True
+
+
+def _guard_solver_check_task(check_class) -> None:
+    original = check_class.check_mesh_exists
+    if getattr(original, _WRAPPED_MARK, False):
+        return
+
+    def check_mesh_exists(task):
+        if not original(task):
+            return False
+        if type(task).__module__.startswith("femsolver.calculix"):
+            return True  # its member check names the incomplete meshes
+        message = analysis_messages(task.analysis, None)
+        if message:
+            task.report.error(message)
+            task.fail()
+            return False
+        return True
+
+    setattr(check_mesh_exists, _WRAPPED_MARK, True)
+    check_mesh_exists.__doc__ = original.__doc__
+    check_class.check_mesh_exists = check_mesh_exists
