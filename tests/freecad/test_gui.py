@@ -4,6 +4,7 @@ analysis and opens the task panel, the panel re-meshes, and a screenshot of the 
 is saved to $TQ_SCREENSHOT.
 """
 import os
+import tempfile
 import unittest
 
 import FreeCAD
@@ -250,6 +251,18 @@ class WorkbenchGuiTest(unittest.TestCase):
         _process_events()
         self._save_view("freecad_quality_map.png")
         self.assertTrue(show_quality(mesh.ViewObject, False))
+        # Saved and opened again: the colours are there without meshing again.
+        FreeCADGui.getDocument(self.doc.Name).resetEdit()
+        FreeCADGui.Control.closeDialog()
+        path = os.path.join(tempfile.mkdtemp(), "pump.FCStd")
+        self.doc.saveAs(path)
+        name = mesh.Name
+        FreeCAD.closeDocument(self.doc.Name)
+        self.doc = FreeCAD.openDocument(path)
+        reopened = self.doc.getObject(name)
+        self.assertNotIn("Touched", reopened.State, "not meshed again")
+        self.assertTrue(show_quality(reopened.ViewObject, True), "colours after reopening")
+        self.assertTrue(show_quality(reopened.ViewObject, False))
 
     # --- helpers ----------------------------------------------------------------------
     def _click_mesh(self, name, shape):

@@ -388,6 +388,10 @@ class MeshObjectTest(unittest.TestCase):
         part = self._part(self._filleted_box(), "FilletedBox")
         mesh = make_mesh(self.doc, part, size=4.0, t4_ratio=3, keep_going=True)
         count, name = mesh.FemMesh.FaceCount, mesh.Name
+        quality = list(mesh.ElementQuality)
+        self.assertEqual(len(quality), count, "one scaled Jacobian per quad")
+        self.assertAlmostEqual(min(quality), mesh.ScaledJacobianMin, 12)
+        self.assertIn("Hidden", mesh.getEditorMode("ElementQuality"), "not a list in the editor")
         path = os.path.join(tempfile.mkdtemp(), "tq.FCStd")
         self.doc.saveAs(path)
         FreeCAD.closeDocument(self.doc.Name)
@@ -397,6 +401,8 @@ class MeshObjectTest(unittest.TestCase):
         self.assertEqual((mesh.T4Ratio, mesh.KeepGoing, mesh.CharacteristicLengthMax.Value), (3, True, 4.0),
                          "inputs restored")
         self.assertEqual(mesh.FemMesh.FaceCount, count, "saved mesh restored")
+        self.assertEqual(list(mesh.ElementQuality), quality, "its quality too (the colour map)")
+        self.assertIn("Hidden", mesh.getEditorMode("ElementQuality"))
         mesh.touch()
         self.doc.recompute()
         self.assertEqual(mesh.FemMesh.FaceCount, count, "re-mesh after reopening")

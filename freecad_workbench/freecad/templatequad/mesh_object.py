@@ -73,6 +73,7 @@ ELEMENT_ORDERS = ["1st"]
 # Values of new properties, for new objects and for files saved before they existed
 # (so those files mesh as they did).
 _DEFAULTS = {"T4Ratio": 2, "Smooth": True, "BestCorners": False}
+ELEMENT_QUALITY = "ElementQuality"
 _OUTPUTS = (
     ("App::PropertyString", "Quality", "Element count and quality, one line"),
     ("App::PropertyLength", "ElementSizeUsed",
@@ -85,7 +86,11 @@ _OUTPUTS = (
     ("App::PropertyStringList", "RefusedFaceNames", "The refused faces (Face28, ...)"),
     ("App::PropertyStringList", "RefusedFaces", "Faces not meshed, with the reason"),
     ("App::PropertyStringList", "TemplateTrees", "Template tree of each meshed face"),
+    ("App::PropertyFloatList", ELEMENT_QUALITY,
+     "Scaled Jacobian of each quad, in element order: the quality colour map's values"),
 )
+#: A million values are no list to show in the property editor: saved, not shown.
+_HIDDEN_OUTPUTS = (ELEMENT_QUALITY,)
 
 
 def _migrate_size(obj) -> None:
@@ -108,6 +113,8 @@ def add_properties(obj) -> None:
     for prop_type, name, doc in _OUTPUTS:
         if not hasattr(obj, name):
             obj.addProperty(prop_type, name, RESULT_GROUP, doc, _OUTPUT)
+    for name in _HIDDEN_OUTPUTS:
+        obj.setEditorMode(name, 2)  # hidden (the editor mode is not saved: set on restore too)
 
 
 class TemplateQuadMesh(StatelessProxy):
@@ -132,7 +139,6 @@ class TemplateQuadMesh(StatelessProxy):
         """What the proxy knows between recomputes and never saves (StatelessProxy)."""
         self.last_error = ""
         self.cancelled = False
-        self.scaled_jacobian = None  # per quad, for the colour map
         self.meshed_inputs = None  # the inputs the current mesh was made with
 
     def execute(self, obj):
@@ -156,13 +162,13 @@ class TemplateQuadMesh(StatelessProxy):
         except meshing.TquadMissing as error:
             self.last_error = str(error).strip()
             self._clear(obj)
-            self.scaled_jacobian = self.meshed_inputs = None
+            self.meshed_inputs = None
             FreeCAD.Console.PrintError(self.last_error + "\n")
             raise
         except ValueError as error:
             self.last_error = meshing.explain_tquad_error(str(error).strip())
             self._clear(obj)
-            self.scaled_jacobian = self.meshed_inputs = None
+            self.meshed_inputs = None
             FreeCAD.Console.PrintError(f"TemplateQuad: {obj.Label}: {self.last_error}\n")
             raise
 
@@ -176,7 +182,7 @@ class TemplateQuadMesh(StatelessProxy):
         obj.ScaledJacobianMean = float(mesh.quality["scaled_jacobian"]["avg"])
         obj.QualityHistogram = [int(n) for n in mesh.quality["jacobian_histogram"]]
         obj.ElementSizeUsed = float(mesh.edge_size or 0.0)
-        self.scaled_jacobian = mesh.scaled_jacobian
+        obj.ElementQuality = mesh.scaled_jacobian.tolist()  # a numpy array
         self._remember_meshed_inputs(obj)
         for line in obj.RefusedFaces:
             FreeCAD.Console.PrintWarning(
@@ -233,5 +239,6 @@ class TemplateQuadMesh(StatelessProxy):
         obj.Incomplete = False
         obj.Quality = ""
         obj.QualityHistogram = []
+        obj.ElementQuality = []
         obj.ScaledJacobianMin = obj.ScaledJacobianMean = 0.0
         obj.ElementSizeUsed = 0.0

@@ -160,7 +160,7 @@ class TemplateQuadTaskPanel:
         if not show_quality(self.obj.ViewObject, on):
             self.quality_colours.setChecked(False)
             self.summary.setText(self.summary.text() + " Recompute the mesh to colour it "
-                                 "(the quality is not saved with the document).")
+                                 "(this file was saved without the quality of each quad).")
 
     # --- helpers ----------------------------------------------------------------------
     def _inputs(self):

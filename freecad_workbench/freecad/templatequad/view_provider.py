@@ -76,12 +76,12 @@ def showing_quality(vobj) -> bool:
 def show_quality(vobj, on: bool) -> bool:
     """show_quality(): colour each quad by its scaled Jacobian (on), or plainly (off).
 
-    The values are the last mesh's (the mesh object's proxy keeps them in memory, not
-    in the file); False when there are none, as after opening a saved document.
+    The values are the mesh object's ElementQuality (saved with the document); False
+    when it has none for this mesh, as in a file saved by a version without it.
     """
     from .quality_colours import element_colours
 
-    values = getattr(vobj.Object.Proxy, "scaled_jacobian", None)
+    values = list(getattr(vobj.Object, "ElementQuality", []) or []) or None
     vobj.Proxy.quality_shown = bool(on)
     if not on or values is None or len(values) != vobj.Object.FemMesh.FaceCount:
         vobj.ElementColor = {}
