@@ -109,6 +109,11 @@ int run_cli(int argc, char** argv) {
   mesh->add_flag("--allow-inverted", command.shape.allow_inverted,
                  "CAD input: keep a face whose mesh still has inverted quads after repair\n"
                  "(reported) instead of refusing it");
+  mesh->add_option("--order", command.shape.order,
+                   "CAD input: 1 four-node quads (default); 2 eight-node quads, a node in the\n"
+                   "middle of each edge on the curve or surface (.vtu, .inp as S8R, .json)")
+      ->type_name("1|2")
+      ->check(CLI::IsMember({1, 2}).description(""));
   mesh->add_option("--threads", command.shape.threads,
                    "CAD input: threads meshing faces (default: all cores); the output is the\n"
                    "same for any number")

@@ -243,6 +243,15 @@ ShapeMesh mesh_shape_input(const MeshCommand& command, OutputFormat format, Qual
 int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
   const InputKind kind = input_kind(command.input);
   const OutputFormat format = output_format(command.output);  // before the work
+  if (command.shape.order == 2) {
+    if (kind == InputKind::boundary) {
+      throw InputError(command.input + ": --order 2 needs a CAD input: a boundary file has no curve or surface "
+                       "for the mid-edge nodes");
+    }
+    if (format == OutputFormat::msh || format == OutputFormat::svg) {
+      throw InputError(command.output + ": second-order quads are written as .vtu, .inp or .json");
+    }
+  }
   check_output_location(command.output);
   std::error_code ec;
   if (std::filesystem::equivalent(command.input, command.output, ec)) {

@@ -49,6 +49,21 @@ struct ShapeMesh {
   std::vector<double> scaled_jacobian;
   // Per quad (or empty): the Lee-Lo shape metric (quality.h), for the user to look at.
   std::vector<double> lee_lo;
+  // Second order (or empty: first order): per quad, the node in the middle of each of
+  // its edges, edge i running from corner i to corner i + 1; the nodes themselves are
+  // in `nodes` with the corners.
+  std::vector<Quad> mid_nodes;
+
+  bool second_order() const { return !mid_nodes.empty(); }
+  // Quad k's nodes in the order of VTK's quadratic quad, CalculiX's S8 and Gmsh's
+  // 8-node quadrangle alike: the four corners, then the middles of edges 0-1, 1-2,
+  // 2-3 and 3-0; its four corners alone at first order.
+  std::vector<NodeId> element_nodes(std::size_t k) const {
+    std::vector<NodeId> ids(quads[k].begin(), quads[k].end());
+    if (second_order()) ids.insert(ids.end(), mid_nodes[k].begin(), mid_nodes[k].end());
+    return ids;
+  }
+  int nodes_per_element() const { return second_order() ? 8 : 4; }
 };
 
 // One boundary region as a shape of one face (face 0), moving the mesh's arrays.

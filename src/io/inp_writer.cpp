@@ -24,10 +24,13 @@ std::string comment(std::string text) {
 
 void write_inp(std::ostream& out, const ShapeMesh& mesh) {
   check_shape_mesh(mesh);
+  // Second order: S8R, the eight-node shell with reduced integration (CalculiX expands
+  // it to C3D20R, its usual choice for shells); its node order is ShapeMesh's.
+  const std::string type = mesh.second_order() ? "S8R" : "S4";
   std::string text;
   text += comment("TemplateQuad mesh: " + std::to_string(mesh.nodes.size()) + " nodes, " +
-                  std::to_string(mesh.quads.size()) + " S4 elements, " + std::to_string(mesh.faces.size()) +
-                  " faces");
+                  std::to_string(mesh.quads.size()) + " " + type + " elements, " +
+                  std::to_string(mesh.faces.size()) + " faces");
   text += comment("element set FACE<k>: the elements of face k; EALL: all elements; NALL: all nodes");
   for (const FaceMesh& f : mesh.faces) {
     if (f.quad_count == 0) continue;
@@ -52,11 +55,10 @@ void write_inp(std::ostream& out, const ShapeMesh& mesh) {
 
   for (const FaceMesh& f : mesh.faces) {
     if (f.quad_count == 0) continue;
-    text += "*ELEMENT, TYPE=S4, ELSET=FACE" + std::to_string(f.face) + "\n";
+    text += "*ELEMENT, TYPE=" + type + ", ELSET=FACE" + std::to_string(f.face) + "\n";
     for (std::int64_t k = f.first_quad; k < f.first_quad + f.quad_count; ++k) {
-      const Quad& q = mesh.quads[static_cast<std::size_t>(k)];
       text += std::to_string(k + 1);
-      for (NodeId id : q) {
+      for (NodeId id : mesh.element_nodes(static_cast<std::size_t>(k))) {
         text += ", ";
         text += std::to_string(static_cast<std::int64_t>(id) + 1);
       }

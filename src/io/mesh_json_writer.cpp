@@ -50,6 +50,19 @@ void write_mesh_json(std::ostream& out, const ShapeMesh& mesh) {
     text += ']';
     flush_if_large(out, text);
   }
+  if (mesh.second_order()) {  // per quad, the nodes in the middle of edges 0-1, 1-2, 2-3, 3-0
+    text += "\n],\n\"mid_nodes\": [";
+    for (std::size_t k = 0; k < mesh.mid_nodes.size(); ++k) {
+      const Quad& q = mesh.mid_nodes[k];
+      text += k == 0 ? "\n[" : ",\n[";
+      for (int i = 0; i < 4; ++i) {
+        if (i > 0) text += ", ";
+        text += std::to_string(q[i]);
+      }
+      text += ']';
+      flush_if_large(out, text);
+    }
+  }
   text += "\n],\n\"faces\": [";
   for (std::size_t r = 0; r < mesh.faces.size(); ++r) {
     const FaceMesh& f = mesh.faces[r];

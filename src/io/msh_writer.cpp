@@ -1,5 +1,7 @@
 #include "io/msh_writer.h"
 
+#include <stdexcept>
+
 #include <algorithm>
 #include <cstdint>
 #include <limits>
@@ -79,6 +81,9 @@ void append_bounding_box(std::string& text, const ShapeMesh& mesh, const FaceMes
 
 void write_msh(std::ostream& out, const ShapeMesh& mesh) {
   check_shape_mesh(mesh);
+  if (mesh.second_order()) {
+    throw std::invalid_argument("the .msh writer writes first-order quads only; write second order as .vtu, .inp or .json");
+  }
   std::string text = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
 
   const std::size_t records = mesh.faces.size();

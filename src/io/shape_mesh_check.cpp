@@ -29,6 +29,19 @@ void check_shape_mesh(const ShapeMesh& mesh) {
       }
     }
   }
+  if (mesh.second_order() && mesh.mid_nodes.size() != mesh.quads.size()) {
+    fail("mid_nodes has " + std::to_string(mesh.mid_nodes.size()) + " entries for " +
+         std::to_string(mesh.quads.size()) + " quads");
+  }
+  for (std::size_t k = 0; k < mesh.mid_nodes.size(); ++k) {
+    for (int i = 0; i < 4; ++i) {
+      const NodeId id = mesh.mid_nodes[k][i];
+      if (id < 0 || id >= node_count) {
+        fail("mid_nodes[" + std::to_string(k) + "][" + std::to_string(i) + "] = " + std::to_string(id) +
+             " is not a node index (" + std::to_string(node_count) + " nodes)");
+      }
+    }
+  }
   std::unordered_set<int> meshed;
   std::int64_t next = 0;
   for (std::size_t r = 0; r < mesh.faces.size(); ++r) {

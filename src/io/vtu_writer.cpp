@@ -15,6 +15,7 @@ namespace tquad {
 namespace {
 
 constexpr std::uint8_t vtk_quad = 9;
+constexpr std::uint8_t vtk_quadratic_quad = 23;
 
 bool little_endian() {
   const std::uint16_t probe = 1;
@@ -72,16 +73,28 @@ void write_vtu(std::ostream& out, const ShapeMesh& mesh, VtuEncoding encoding) {
   // storage is the VTK array layout itself.
   static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
   static_assert(sizeof(Quad) == 4 * sizeof(std::int32_t), "Quad must be four packed int32");
+  const int per_cell = mesh.nodes_per_element();
   std::vector<std::int64_t> offsets(cells);
-  for (std::size_t k = 0; k < cells; ++k) offsets[k] = 4 * static_cast<std::int64_t>(k + 1);
-  const std::vector<std::uint8_t> types(cells, vtk_quad);
+  for (std::size_t k = 0; k < cells; ++k) offsets[k] = per_cell * static_cast<std::int64_t>(k + 1);
+  const std::vector<std::uint8_t> types(cells, mesh.second_order() ? vtk_quadratic_quad : vtk_quad);
+  // Second order: corners then edge middles per cell, VTK's quadratic quad order.
+  std::vector<std::int32_t> quadratic;
+  if (mesh.second_order()) {
+    quadratic.reserve(8 * cells);
+    for (std::size_t k = 0; k < cells; ++k) {
+      quadratic.insert(quadratic.end(), mesh.quads[k].begin(), mesh.quads[k].end());
+      quadratic.insert(quadratic.end(), mesh.mid_nodes[k].begin(), mesh.mid_nodes[k].end());
+    }
+  }
+  const void* cell_nodes = mesh.second_order() ? static_cast<const void*>(quadratic.data())
+                                               : static_cast<const void*>(mesh.quads.data());
   std::vector<std::int32_t> face(cells, 0);
   for (const FaceMesh& f : mesh.faces) {
     std::fill_n(face.begin() + f.first_quad, f.quad_count, static_cast<std::int32_t>(f.face));
   }
 
   const ArrayBlock points{"Float64", "Points", 3, mesh.nodes.data(), mesh.nodes.size() * sizeof(Vec3)};
-  const ArrayBlock connectivity{"Int32", "connectivity", 1, mesh.quads.data(), cells * sizeof(Quad)};
+  const ArrayBlock connectivity{"Int32", "connectivity", 1, cell_nodes, cells * per_cell * sizeof(std::int32_t)};
   const ArrayBlock offset_block{"Int64", "offsets", 1, offsets.data(), cells * sizeof(std::int64_t)};
   const ArrayBlock type_block{"UInt8", "types", 1, types.data(), cells};
   const ArrayBlock face_block{"Int32", "face", 1, face.data(), cells * sizeof(std::int32_t)};
@@ -126,8 +139,10 @@ void write_vtu(std::ostream& out, const ShapeMesh& mesh, VtuEncoding encoding) {
   xyz.reserve(3 * mesh.nodes.size());
   for (const Vec3& p : mesh.nodes) xyz.insert(xyz.end(), {p.x, p.y, p.z});
   std::vector<std::int32_t> ids;
-  ids.reserve(4 * cells);
-  for (const Quad& q : mesh.quads) ids.insert(ids.end(), q.begin(), q.end());
+  ids.reserve(per_cell * cells);
+  for (std::size_t k = 0; k < cells; ++k) {
+    for (NodeId id : mesh.element_nodes(k)) ids.push_back(id);
+  }
   auto block = [&](const ArrayBlock& a, const auto& values, int per_line) {
     write_data_array_tag(out, a, "ascii", 0);
     write_ascii_values(out, values.data(), values.size(), per_line);
@@ -136,7 +151,7 @@ void write_vtu(std::ostream& out, const ShapeMesh& mesh, VtuEncoding encoding) {
   out << "      <Points>\n";
   block(points, xyz, 3);
   out << "      </Points>\n      <Cells>\n";
-  block(connectivity, ids, 4);
+  block(connectivity, ids, per_cell);
   block(offset_block, offsets, 16);
   block(type_block, types, 32);
   out << "      </Cells>\n      <CellData Scalars=\"face\">\n";

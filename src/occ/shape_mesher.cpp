@@ -22,6 +22,7 @@
 #include "core/elapsed.h"
 #include "core/input_error.h"
 #include "occ/edge_discretization.h"
+#include "occ/mid_edge_nodes.h"
 #include "occ/face_boundary.h"
 #include "occ/face_corners.h"
 #include "occ/face_route.h"
@@ -178,6 +179,7 @@ class ShapeMeshContext {
       ++result_.refinement_rounds;
     }
     stage("assemble", [&] { assemble(); });
+    if (options_.order == 2) stage("mid-edge nodes", [&] { add_middles(); });
     return std::move(result_);
   }
 
@@ -361,6 +363,12 @@ class ShapeMeshContext {
 
   // Stage "assemble": the refusal policy, then the faces' quads and interior nodes in
   // face order (interior nodes after all edge nodes), whatever the thread count.
+  void add_middles() {
+    std::vector<const FaceMeshResult*> face_meshes;
+    for (const FaceMesh& record : result_.mesh.faces) face_meshes.push_back(&outcomes_[record.face].mesh);
+    add_mid_edge_nodes(index_, edges_, face_meshes, result_.mesh);
+  }
+
   void assemble() {
     ShapeMesh& mesh = result_.mesh;
     for (int f = 0; f < index_.face_count(); ++f) {
@@ -427,6 +435,9 @@ class ShapeMeshContext {
 }  // namespace
 
 ShapeMeshResult mesh_shape(const TopoDS_Shape& shape, const ShapeMeshOptions& options) {
+  if (options.order != 1 && options.order != 2) {
+    throw InputError("the element order must be 1 or 2, not " + std::to_string(options.order));
+  }
   return ShapeMeshContext(shape, options).run();
 }
 

@@ -79,6 +79,9 @@ struct ShapeMeshOptions {
   bool best_corners = false;
   // Worker threads for the faces; <= 0: all cores.
   int threads = 0;
+  // 1: four-node quads; 2: eight-node quads, a node in the middle of each edge on the
+  // curve or surface it stands for (mid_edge_nodes.h).
+  int order = 1;
   // Mesh the other faces when one is refused (and list it); otherwise refuse all.
   bool keep_going = false;
   // Keep a face whose mesh still has inverted quads after repair (counted in

@@ -110,6 +110,14 @@ py::dict mesh_dict(const ShapeMesh& mesh, const QualitySummary& quality) {
   out["quality"] = quality_dict(quality);
   out["scaled_jacobian"] = numpy_copy(mesh.scaled_jacobian);
   out["lee_lo"] = numpy_copy(mesh.lee_lo);
+  if (mesh.second_order()) {
+    py::array_t<std::int32_t> mids({static_cast<py::ssize_t>(mesh.mid_nodes.size()), py::ssize_t{4}});
+    auto m = mids.mutable_unchecked<2>();
+    for (py::ssize_t i = 0; i < m.shape(0); ++i) {
+      for (int k = 0; k < 4; ++k) m(i, k) = mesh.mid_nodes[i][k];
+    }
+    out["mid_nodes"] = mids;
+  }
   return out;
 }
 
@@ -159,8 +167,9 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
                             const std::map<int, std::vector<int>>& corners, bool keep_going,
                             bool allow_inverted, int threads, int t4_ratio, int t5_cut_edges,
                             long long max_quads, bool smooth, const py::object& progress,
-                            double read_timeout, bool best_corners, double min_size) {
+                            double read_timeout, bool best_corners, double min_size, int order) {
   ShapeMeshOptions options;
+  options.order = order;  // checked by mesh_shape (1 or 2)
   options.smooth = smooth;
   options.best_corners = best_corners;
   // The Python progress callable runs with the GIL, one call at a time; returning
@@ -275,5 +284,5 @@ PYBIND11_MODULE(_core, m) {
   m.def("mesh_shape", &tquad::mesh_shape_binding, py::arg("brep_text_or_path"), py::arg("size"),
         py::arg("faces"), py::arg("corners"), py::arg("keep_going"), py::arg("allow_inverted"),
         py::arg("threads"), py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("smooth"),
-        py::arg("progress"), py::arg("read_timeout"), py::arg("best_corners"), py::arg("min_size"));
+        py::arg("progress"), py::arg("read_timeout"), py::arg("best_corners"), py::arg("min_size"), py::arg("order"));
 }

@@ -358,6 +358,58 @@ TEST_F(ShapeCli, MeshioReadsTheInp) {
   }
 }
 
+// ---- --order 2 ---------------------------------------------------------------------
+
+// argv: RESULT.json FILE; meshio's cell blocks and point count of a file.
+const char* const meshio_cells_script = R"(
+import json, sys
+import meshio
+m = meshio.read(sys.argv[2])
+json.dump({"points": int(len(m.points)), "cells": [[b.type, int(len(b.data))] for b in m.cells]},
+          open(sys.argv[1], "w"))
+)";
+
+TEST_F(ShapeCli, SecondOrderIsWrittenAsEightNodeQuads) {
+  const json first = report_of(shape_file("cylinder.brep"), "first.json");
+  const json second = report_of(shape_file("cylinder.brep"), "second.json", {"--order", "2"});
+  ASSERT_FALSE(HasFailure());
+  EXPECT_EQ(second["quads"], first["quads"]);
+  // A closed surface: each of the 4 q edges is in two quads, so 2 q middles.
+  EXPECT_EQ(second["nodes"].get<long long>(), first["nodes"].get<long long>() + 2 * first["quads"].get<long long>());
+  const json mesh = read_json("second.json");
+  ASSERT_EQ(mesh["mid_nodes"].size(), mesh["quads"].size());
+  EXPECT_EQ(mesh["mid_nodes"][0].size(), 4u);
+
+  mesh_ok(shape_file("cylinder.brep"), "second.inp", {"--order", "2"});
+  ASSERT_FALSE(HasFailure());
+  const std::string inp = read_text(path("second.inp"));
+  EXPECT_NE(inp.find("TYPE=S8R"), std::string::npos);
+  EXPECT_EQ(inp.find("TYPE=S4"), std::string::npos);
+  if (!python_module_available("meshio")) GTEST_SKIP() << "meshio is not importable by " << system_python;
+  for (const std::string file : {"second.inp", "second.vtu"}) {
+    if (file == "second.vtu") mesh_ok(shape_file("cylinder.brep"), file, {"--order", "2"});
+    const RunResult r = run_program(system_python, {"-c", meshio_cells_script, path("cells.json"), path(file)});
+    ASSERT_EQ(r.exit_status, 0) << r.out << r.err;
+    const json cells = read_json("cells.json");
+    EXPECT_EQ(cells["points"], second["nodes"]) << file;
+    ASSERT_EQ(cells["cells"].size(), file == "second.inp" ? 3u : 1u) << file << ": " << cells.dump();  // .inp: a block per face
+    long long quads = 0;
+    for (const json& block : cells["cells"]) {
+      EXPECT_EQ(block[0], "quad8") << file;
+      quads += block[1].get<long long>();
+    }
+    EXPECT_EQ(quads, second["quads"].get<long long>()) << file;
+  }
+}
+
+TEST_F(ShapeCli, SecondOrderNeedsACadInputAndAFormatThatHoldsIt) {
+  std::vector<int> corners;
+  const std::string square = boundary_file("square.json", straight_loop({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {2, 2, 2, 2}, corners), corners);
+  expect_refused(square, {"--order", "2"}, {"--order 2", "CAD input"});
+  expect_refused(shape_file("cylinder.brep"), {"--order", "2"}, {".vtu, .inp or .json"}, "cylinder.msh");
+  expect_refused(shape_file("cylinder.brep"), {"--order", "3"}, {"--order"});
+}
+
 // ---- --faces -----------------------------------------------------------------------
 
 TEST_F(ShapeCli, BestCornersSearchEveryFaceWithoutHolesAndAreNeverWorse) {

@@ -216,6 +216,35 @@ class QualityFieldsTest(unittest.TestCase):
         np.testing.assert_array_equal(cells["lee_lo"][0], mesh.lee_lo)
 
 
+class SecondOrderTest(unittest.TestCase):
+    """order=2: the same quads, and a node in the middle of every edge, shared by the
+    quads on both sides; the hole of the plate stays round."""
+
+    def test_middle_nodes_are_shared_and_on_the_hole(self):
+        path = os.path.join(SHAPES, "plate_with_hole.brep")  # 100 x 60, hole d 20 at (50, 30)
+        first = tquad.mesh_shape(path, size=4.0)
+        second = tquad.mesh_shape(path, size=4.0, order=2)
+        self.assertIsNone(first.mid_nodes)
+        np.testing.assert_array_equal(second.quads, first.quads)
+        np.testing.assert_array_equal(second.nodes[:len(first.nodes)], first.nodes)
+        self.assertEqual(second.mid_nodes.shape, (len(second.quads), 4))
+        middle_of = {}
+        for quad, mids in zip(second.quads.tolist(), second.mid_nodes.tolist()):
+            for i in range(4):
+                key = tuple(sorted((quad[i], quad[(i + 1) % 4])))
+                self.assertEqual(middle_of.setdefault(key, mids[i]), mids[i], "one middle per edge")
+        self.assertEqual(len(second.nodes), len(first.nodes) + len(middle_of))
+        radius = lambda n: float(np.hypot(*(second.nodes[n][:2] - (50.0, 30.0))))
+        on_rim = [m for (a, b), m in middle_of.items() if abs(radius(a) - 10) < 1e-9 and abs(radius(b) - 10) < 1e-9]
+        self.assertGreater(len(on_rim), 8)
+        for m in on_rim:
+            self.assertAlmostEqual(radius(m), 10.0, 9)
+
+    def test_other_orders_are_a_value_error(self):
+        with self.assertRaises(ValueError):
+            tquad.mesh_shape(os.path.join(SHAPES, "cylinder.brep"), order=3)
+
+
 class BoundarySmoothingTest(unittest.TestCase):
     """A planar boundary region is smoothed in its plane by default."""
 

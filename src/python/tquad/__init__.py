@@ -58,6 +58,10 @@ class Mesh:
         scaled_jacobian, lee_lo: float64 arrays, one value per quad (on a CAD
             face, the scaled Jacobian's corners are measured against the surface's
             outer normal).
+        mid_nodes: second order (``order=2``) only, else None: int32 array, M x 4,
+            the node in the middle of each quad's edges 0-1, 1-2, 2-3 and 3-0;
+            ``quads`` then ``mid_nodes`` side by side are the 8-node quads in the
+            order of VTK's quadratic quad and CalculiX's S8.
         edge_size: for a shape, the target edge length used.
         changed_edges: for a shape, the edges whose counts changed by one so that
             every face's total is even: dicts ``edge``, ``from``, ``to``.
@@ -77,6 +81,7 @@ class Mesh:
         self.unsewn_edge_pairs: List[Tuple[int, int]] = data.get("unsewn_edge_pairs", [])
         self.scaled_jacobian: np.ndarray = data["scaled_jacobian"]
         self.lee_lo: np.ndarray = data["lee_lo"]
+        self.mid_nodes: Optional[np.ndarray] = data.get("mid_nodes")
 
     @property
     def template_trees(self) -> List[str]:
@@ -143,7 +148,7 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
                max_quads: int = _MAX_QUADS, smooth: bool = True,
                progress: Optional[Callable[[str, int, int], Optional[bool]]] = None,
                read_timeout: float = 300.0, best_corners: bool = False,
-               min_size: float = 0.0) -> Mesh:
+               min_size: float = 0.0, order: int = 1) -> Mesh:
     """Mesh the faces of a CAD shape, conforming across shared edges.
 
     Args:
@@ -173,6 +178,8 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
             other corner sets and keep the best worst, then mean, scaled Jacobian;
             each such face's ``corner_search`` gives the natural choice's figures
             beside the chosen ones (the CLI's --corners best).
+        order: 1 for four-node quads; 2 adds a node in the middle of every quad
+            edge, on the CAD edge's curve or the face's surface (``mid_nodes``).
 
     Raises:
         Cancelled: the progress callback asked to stop (nothing is returned).
@@ -186,4 +193,4 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
                                  bool(keep_going), bool(allow_inverted), int(threads),
                                  int(t4_ratio), int(t5_cut_edges), int(max_quads), bool(smooth),
                                  progress, float(read_timeout), bool(best_corners),
-                                 float(min_size)))
+                                 float(min_size), int(order)))

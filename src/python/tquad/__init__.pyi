@@ -21,6 +21,7 @@ class Mesh:
     unsewn_edge_pairs: List[Tuple[int, int]]
     scaled_jacobian: np.ndarray
     lee_lo: np.ndarray
+    mid_nodes: Optional[np.ndarray]
     def __init__(self, data: dict) -> None: ...
     @property
     def template_trees(self) -> List[str]: ...
@@ -38,4 +39,4 @@ def mesh_shape(brep_text_or_path: str, *, size: float = ..., faces: Optional[Ite
                t5_cut_edges: int = ..., max_quads: int = ..., smooth: bool = ...,
                progress: Optional[Callable[[str, int, int], Optional[bool]]] = ...,
                read_timeout: float = ..., best_corners: bool = ...,
-               min_size: float = ...) -> Mesh: ...
+               min_size: float = ..., order: int = ...) -> Mesh: ...

@@ -1,0 +1,26 @@
+// Second-order quads: a node in the middle of every quad edge, on the geometry.
+//
+// On a CAD edge the middle node is the edge's curve at the middle parameter of the
+// segment, made once per segment, so the faces on both sides share it (conforming,
+// and on the curve: a hole's rim stays round). Inside a face it is the surface at the
+// middle of the two nodes' mesh coordinates ((u, v), or polar (x, y) around a pole),
+// shared by the two quads of that edge.
+#pragma once
+
+#include <vector>
+
+#include "core/shape_mesh.h"
+#include "occ/edge_discretization.h"
+#include "occ/face_mesher.h"
+#include "occ/shape_index.h"
+
+namespace tquad {
+
+// Fills mesh.mid_nodes (one entry per quad) and appends the middle nodes to
+// mesh.nodes. `face_meshes[r]` is the result whose quads are mesh.faces[r]'s, in the
+// same order (local numbering: FaceMeshResult); `edges` the CAD edges' nodes. The
+// order of the new nodes follows the quads, so the output does not depend on threads.
+void add_mid_edge_nodes(const ShapeIndex& index, const std::vector<EdgeNodes>& edges,
+                        const std::vector<const FaceMeshResult*>& face_meshes, ShapeMesh& mesh);
+
+}  // namespace tquad
