@@ -162,11 +162,11 @@ class PlateWithHoleTest(unittest.TestCase):
         mesh.AcceptIncomplete = True
         self.assertEqual(fea.check_prerequisites(), "", "accepted by the user: no stop")
 
-    def _solve(self, shape):
+    def _solve(self, shape, **mesh_options):
         """Meshes, solves with CalculiX, returns (mesh object, result object)."""
         from femtools import ccxtools
 
-        analysis, solver, mesh = self._analysis(shape)
+        analysis, solver, mesh = self._analysis(shape, **mesh_options)
         self.assertEqual(mesh.FemMesh.QuadrangleCount, mesh.FemMesh.FaceCount, "all quads")
 
         fea = ccxtools.FemToolsCcx(analysis, solver)
@@ -176,16 +176,26 @@ class PlateWithHoleTest(unittest.TestCase):
         self.assertEqual(fea.check_prerequisites(), "", "FEM prerequisites")
         fea.write_inp_file()
         self.assertTrue(os.path.isfile(fea.inp_file_name), "no CalculiX input written")
+        shell = "S8" if mesh.ElementOrder == "2nd" else "S4"
         with open(fea.inp_file_name) as inp:
-            self.assertIn("TYPE=S4", inp.read(), "quads must go to CalculiX as S4 shells")
+            self.assertIn(f"TYPE={shell}", inp.read(), f"quads must go to CalculiX as {shell} shells")
         self.assertEqual(fea.ccx_run(), 0, "CalculiX failed")
         fea.load_results()
         results = [o for o in analysis.Group if o.isDerivedFrom("Fem::FemResultObject")]
         self.assertEqual(len(results), 1, "one result object")
         return mesh, results[0]
 
-    def _check_stress_concentration(self, shape, label):
-        mesh, result = self._solve(shape)
+    def test_second_order_stress_concentration_at_the_hole(self):
+        """The same plate in eight-node quads (CalculiX S8): the hole's rim nodes, edge
+        middles included, lie on the circle, and Kt is within 10% of Heywood's."""
+        shape = Part.Shape()
+        shape.read(PLATE_BREP)
+        mesh = self._check_stress_concentration(shape, "four faces, second order",
+                                                element_order="2nd")
+        self.assertEqual(len(mesh.FemMesh.getElementNodes(1)), 8)
+
+    def _check_stress_concentration(self, shape, label, **mesh_options):
+        mesh, result = self._solve(shape, **mesh_options)
 
         nodes = result.Mesh.FemMesh.Nodes
         von_mises = dict(zip(result.NodeNumbers, result.vonMises))
@@ -203,6 +213,7 @@ class PlateWithHoleTest(unittest.TestCase):
                         f"Kt {kt:.3f} is not within 10% of Heywood's {KT_HEYWOOD:.3f}")
         self.assertAlmostEqual(max(von_mises.values()), max(on_hole), delta=1e-6 * max(on_hole),
                                msg="the peak stress of the plate must be at the hole")
+        return mesh
 
 
 class EverySolverCheckTest(unittest.TestCase):

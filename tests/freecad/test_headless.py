@@ -318,6 +318,24 @@ class MeshObjectTest(unittest.TestCase):
         for tquad_text, freecad_text in cases.items():
             self.assertEqual(meshing.freecad_wording(tquad_text), freecad_text)
 
+    def test_second_order_quads_share_their_edge_middles(self):
+        from freecad.templatequad import make_mesh
+        part = self._part(Part.makeCylinder(5, 10), "Cylinder")
+        first = make_mesh(self.doc, part, size=2.0)
+        second = make_mesh(self.doc, part, size=2.0, element_order="2nd")
+        quads = first.FemMesh.QuadrangleCount
+        self.assertEqual(second.FemMesh.QuadrangleCount, quads)
+        self.assertEqual(second.FemMesh.FaceCount, quads, "quads only")
+        self.assertEqual(len(second.FemMesh.getElementNodes(1)), 8, "8-node quads")
+        # A closed surface: 2 q edges, each with one middle node shared by its two quads.
+        self.assertEqual(second.FemMesh.NodeCount, first.FemMesh.NodeCount + 2 * quads)
+        self.assertEqual(second.ElementOrder, "2nd")
+        second.ElementOrder = "1st"
+        self.doc.recompute()
+        self.assertEqual(second.FemMesh.NodeCount, first.FemMesh.NodeCount, "back to 4-node quads")
+        with self.assertRaises(ValueError):
+            make_mesh(self.doc, part, element_order="3rd")
+
     def test_size_floor_and_element_order(self):
         from freecad.templatequad import make_mesh
         part = self._part(Part.makeBox(10, 20, 30), "Box")
@@ -326,8 +344,7 @@ class MeshObjectTest(unittest.TestCase):
                                "the automatic size (diagonal / 25 = 1.5) is raised to the minimum")
         self._assert_same_as_tquad(mesh, part.Shape, 8.0)
         self.assertEqual(mesh.ElementOrder, "1st")
-        self.assertEqual(list(mesh.getEnumerationsOfProperty("ElementOrder")), ["1st"],
-                         "no order is offered that the engine cannot make")
+        self.assertEqual(list(mesh.getEnumerationsOfProperty("ElementOrder")), ["1st", "2nd"])
         with self.assertRaises(ValueError) as caught:
             make_mesh(self.doc, part, size=2.0, min_size=3.0)
         self.assertIn("minimum element size (3) is larger than the element size (2)",
@@ -343,6 +360,15 @@ class MeshObjectTest(unittest.TestCase):
         mesh.Proxy.onDocumentRestored(mesh)
         self.assertNotIn("Size", mesh.PropertiesList, "the old property is removed")
         self.assertEqual(mesh.CharacteristicLengthMax.Value, 3.5, "its value is kept")
+
+    def test_files_saved_when_only_first_order_was_offered_offer_second_order(self):
+        from freecad.templatequad import make_mesh
+        part = self._part(Part.makeBox(10, 20, 30), "Box")
+        mesh = make_mesh(self.doc, part, size=5.0)
+        mesh.ElementOrder = ["1st"]  # as such a file has it
+        mesh.Proxy.onDocumentRestored(mesh)
+        self.assertEqual(list(mesh.getEnumerationsOfProperty("ElementOrder")), ["1st", "2nd"])
+        self.assertEqual(mesh.ElementOrder, "1st", "its value is kept")
 
     def test_bad_corners_fail_loudly_and_leave_no_stale_mesh(self):
         from freecad.templatequad import make_mesh

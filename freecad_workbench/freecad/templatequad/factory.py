@@ -12,14 +12,14 @@ from typing import Iterable, Optional
 
 import FreeCAD
 
-from .mesh_object import TemplateQuadMesh
+from .mesh_object import ELEMENT_ORDERS, TemplateQuadMesh
 
 
 def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]] = None,
               t4_ratio: int = 2, keep_going: bool = False, name: str = "TemplateQuadMesh",
               faces: Optional[Iterable[str]] = None, raise_on_error: bool = True,
               min_size: float = 0.0, smooth: bool = True, best_corners: bool = False,
-              accept_incomplete: bool = False):
+              accept_incomplete: bool = False, element_order: str = "1st"):
     """make_mesh(): add a TemplateQuad mesh of part_obj to doc, recompute, return it.
 
     Args:
@@ -40,6 +40,7 @@ def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]]
         min_size: CharacteristicLengthMin, the floor of the element size (0 = none).
         smooth, best_corners, accept_incomplete: the Smooth, BestCorners and
             AcceptIncomplete properties.
+        element_order: "1st" (4-node quads) or "2nd" (8-node quads), ElementOrder.
 
     Returns:
         The mesh object; None when the user cancelled the meshing in the GUI's
@@ -56,8 +57,13 @@ def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]]
         message = bad[0]
         FreeCAD.Console.PrintError(f"TemplateQuad: {part_obj.Label}: {message}\n")
         raise ValueError(message)
+    if element_order not in ELEMENT_ORDERS:
+        message = f"element_order must be one of {', '.join(ELEMENT_ORDERS)}, not {element_order!r}"
+        FreeCAD.Console.PrintError(f"TemplateQuad: {part_obj.Label}: {message}\n")
+        raise ValueError(message)
     obj = doc.addObject("Fem::FemMeshObjectPython", name)
     TemplateQuadMesh(obj)
+    obj.ElementOrder = element_order
     obj.Part = part_obj
     obj.CharacteristicLengthMax = float(size)
     obj.CharacteristicLengthMin = float(min_size)

@@ -14,7 +14,8 @@ Gmsh mesh object, where they mean the same):
     Faces                    FreeCAD face names to mesh ("Face3", ...); empty = all
     CharacteristicLengthMax  element size; 0 = automatic (bounding-box diagonal / 25)
     CharacteristicLengthMin  the element size never goes below it (0 = no floor)
-    ElementOrder             "1st" (4-node quads; the engine has no second order yet)
+    ElementOrder             "1st" (4-node quads) or "2nd" (8-node quads, their edge
+                             middles on the curves and surfaces)
     Smooth                   optimize node positions on the surfaces
     BestCorners              search more corner choices per face (slower)
     Corners                  "FACE:V1,V2,..." entries overriding the automatic corners
@@ -48,7 +49,8 @@ _INPUTS = (
      "The element size never goes below this (0 = no floor); short or strongly curved "
      "edges may still get shorter elements"),
     ("App::PropertyEnumeration", "ElementOrder",
-     "Element order: 1st (4-node quadrilaterals); second order is not available yet"),
+     "Element order: 1st (4-node quadrilaterals, S4 shells in CalculiX) or 2nd (8-node "
+     "quadrilaterals, a node in the middle of each edge on the part's curves and surfaces)"),
     ("App::PropertyBool", "Smooth",
      "Move interior nodes on each face's surface to better-shaped quads (never lowering "
      "the worst corner around a node)"),
@@ -69,7 +71,7 @@ _INPUTS = (
      "Advanced: the k of the T4 template test k*C <= A and k*C <= B (at least 2)"),
 )
 #: The orders ElementOrder offers (FreeCAD's Gmsh object spells them the same way).
-ELEMENT_ORDERS = ["1st"]
+ELEMENT_ORDERS = ["1st", "2nd"]
 # Values of new properties, for new objects and for files saved before they existed
 # (so those files mesh as they did).
 _DEFAULTS = {"T4Ratio": 2, "Smooth": True, "BestCorners": False}
@@ -100,6 +102,19 @@ def _migrate_size(obj) -> None:
         obj.removeProperty("Size")
 
 
+def _offer_every_order(obj) -> None:
+    """Files saved when only "1st" was offered: offer "2nd" too, keeping the value."""
+    if list(obj.getEnumerationsOfProperty("ElementOrder")) != ELEMENT_ORDERS:
+        value = obj.ElementOrder
+        obj.ElementOrder = ELEMENT_ORDERS
+        obj.ElementOrder = value if value in ELEMENT_ORDERS else ELEMENT_ORDERS[0]
+
+
+def element_order_number(obj) -> int:
+    """The ElementOrder property as tquad's order (1 or 2)."""
+    return 2 if obj.ElementOrder == "2nd" else 1
+
+
 def add_properties(obj) -> None:
     """add_properties(): add the properties obj lacks (new objects and older files)."""
     for prop_type, name, doc in _INPUTS:
@@ -110,6 +125,7 @@ def add_properties(obj) -> None:
             if name in _DEFAULTS:
                 setattr(obj, name, _DEFAULTS[name])
     _migrate_size(obj)
+    _offer_every_order(obj)
     for prop_type, name, doc in _OUTPUTS:
         if not hasattr(obj, name):
             obj.addProperty(prop_type, name, RESULT_GROUP, doc, _OUTPUT)
@@ -216,7 +232,7 @@ class TemplateQuadMesh(StatelessProxy):
             min_size=obj.CharacteristicLengthMin.Value, faces=meshing.parse_faces(obj.Faces),
             corners=meshing.parse_corners(obj.Corners), t4_ratio=obj.T4Ratio,
             keep_going=True, smooth=obj.Smooth, best_corners=obj.BestCorners,
-            progress=progress), f"Meshing {obj.Part.Label}")
+            order=element_order_number(obj), progress=progress), f"Meshing {obj.Part.Label}")
 
     @staticmethod
     def _source_shape(obj):

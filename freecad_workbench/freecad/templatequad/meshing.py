@@ -112,7 +112,7 @@ def parse_faces(names: Iterable[str]) -> Optional[List[int]]:
 def mesh_shape(shape, size: float = 0.0, faces: Optional[Sequence[int]] = None,
                corners: Optional[Dict[int, List[int]]] = None, t4_ratio: int = 2,
                keep_going: bool = False, smooth: bool = True, best_corners: bool = False,
-               min_size: float = 0.0, progress=None):
+               min_size: float = 0.0, order: int = 1, progress=None):
     """mesh_shape(): mesh a Part.Shape with tquad; returns the tquad.Mesh.
 
     The shape goes over as BREP text (``exportBrepToString``), which keeps its
@@ -128,7 +128,7 @@ def mesh_shape(shape, size: float = 0.0, faces: Optional[Sequence[int]] = None,
                             corners=corners or None, keep_going=bool(keep_going),
                             t4_ratio=int(t4_ratio), smooth=bool(smooth),
                             best_corners=bool(best_corners), min_size=float(min_size),
-                            progress=progress)
+                            order=int(order), progress=progress)
 
 
 def run_plain(work, title: str = ""):
@@ -136,12 +136,23 @@ def run_plain(work, title: str = ""):
     return work(None)
 
 
+def element_nodes(mesh):
+    """element_nodes(): the elements' node indices (0-based), M x 4, or M x 8 for a
+    second-order mesh: corners, then the middles of edges 0-1, 1-2, 2-3 and 3-0, the
+    order of VTK's quadratic quad and of FreeCAD's (SMESH's) 8-node quadrangle."""
+    import numpy
+
+    quads = numpy.asarray(mesh.quads).reshape(-1, 4)
+    mids = getattr(mesh, "mid_nodes", None)
+    return quads if mids is None else numpy.hstack([quads, numpy.asarray(mids).reshape(-1, 4)])
+
+
 def to_femmesh(mesh):
     """to_femmesh(): a Fem.FemMesh of the tquad mesh's quads (node and element ids from 1).
 
     Node i (0-based in tquad) becomes node i + 1; quad j becomes face element j + 1 with
     the same counter-clockwise node order, so the shell normals follow the CAD faces'
-    outer normals. The mesh goes through a temporary legacy VTK file that FemMesh.read
+    outer normals; a second-order quad has its four edge middles after its corners. The mesh goes through a temporary legacy VTK file that FemMesh.read
     takes in one C++ call (femmesh_from_vtk_file); where that FreeCAD cannot read it
     (built without VTK) or reads something else, node by node (femmesh_node_by_node).
     Measured by bench/freecad_transfer.py: see the README.
@@ -150,24 +161,27 @@ def to_femmesh(mesh):
     return femmesh if femmesh is not None else femmesh_node_by_node(mesh)
 
 
-def write_legacy_vtk(path: str, nodes, quads) -> None:
-    """write_legacy_vtk(): nodes (n x 3 floats) and quads (m x 4, 0-based) as a binary
-    legacy VTK unstructured grid (big-endian, as that format asks; cell type 9 = quad)."""
+def write_legacy_vtk(path: str, nodes, elements) -> None:
+    """write_legacy_vtk(): nodes (n x 3 floats) and elements (m x 4 quads or m x 8
+    quadratic quads, 0-based) as a binary legacy VTK unstructured grid (big-endian, as
+    that format asks; cell type 9 = quad, 23 = quadratic quad)."""
     import numpy
 
     nodes = numpy.asarray(nodes, dtype=float).reshape(-1, 3)
-    quads = numpy.asarray(quads).reshape(-1, 4)
-    cells = numpy.empty((len(quads), 5), dtype=">i4")
-    cells[:, 0] = 4
-    cells[:, 1:] = quads
+    elements = numpy.asarray(elements)
+    per = elements.shape[1] if elements.ndim == 2 else 4
+    elements = elements.reshape(-1, per)
+    cells = numpy.empty((len(elements), per + 1), dtype=">i4")
+    cells[:, 0] = per
+    cells[:, 1:] = elements
     with open(path, "wb") as out:
         out.write(b"# vtk DataFile Version 3.0\nTemplateQuad mesh\nBINARY\nDATASET UNSTRUCTURED_GRID\n")
         out.write(b"POINTS %d double\n" % len(nodes))
         out.write(nodes.astype(">f8").tobytes())
-        out.write(b"\nCELLS %d %d\n" % (len(quads), 5 * len(quads)))
+        out.write(b"\nCELLS %d %d\n" % (len(elements), (per + 1) * len(elements)))
         out.write(cells.tobytes())
-        out.write(b"\nCELL_TYPES %d\n" % len(quads))
-        out.write(numpy.full(len(quads), 9, dtype=">i4").tobytes())
+        out.write(b"\nCELL_TYPES %d\n" % len(elements))
+        out.write(numpy.full(len(elements), 23 if per == 8 else 9, dtype=">i4").tobytes())
         out.write(b"\n")
 
 
@@ -184,7 +198,7 @@ def femmesh_from_vtk_file(mesh):
     femmesh = Fem.FemMesh()
     with tempfile.TemporaryDirectory(prefix="templatequad-") as folder:
         path = os.path.join(folder, "mesh.vtk")
-        write_legacy_vtk(path, mesh.nodes, mesh.quads)
+        write_legacy_vtk(path, mesh.nodes, element_nodes(mesh))
         try:
             femmesh.read(path)
         except Exception:  # FreeCAD without VTK raises here; any failure means fall back
@@ -196,8 +210,9 @@ def femmesh_from_vtk_file(mesh):
     for node_id in (1, len(nodes)):
         if tuple(femmesh.getNodeById(node_id)) != tuple(float(c) for c in nodes[node_id - 1]):
             return None
-    for quad_id in (1, len(mesh.quads)):
-        if tuple(femmesh.getElementNodes(quad_id)) != tuple(int(n) + 1 for n in mesh.quads[quad_id - 1]):
+    elements = element_nodes(mesh)
+    for quad_id in (1, len(elements)):
+        if tuple(femmesh.getElementNodes(quad_id)) != tuple(int(n) + 1 for n in elements[quad_id - 1]):
             return None
     return femmesh
 
@@ -212,7 +227,7 @@ def femmesh_node_by_node(mesh):
     for node_id, (x, y, z) in enumerate(mesh.nodes.tolist(), start=1):
         add_node(x, y, z, node_id)
     add_face = femmesh.addFace
-    for quad_id, quad in enumerate((mesh.quads + 1).tolist(), start=1):
+    for quad_id, quad in enumerate((element_nodes(mesh) + 1).tolist(), start=1):
         add_face(quad, quad_id)
     return femmesh
 

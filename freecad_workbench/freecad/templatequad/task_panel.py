@@ -269,7 +269,7 @@ class TemplateQuadTaskPanel:
         self.element_order = QtGui.QComboBox()
         self.element_order.addItems(ELEMENT_ORDERS)
         self.element_order.setToolTip("1st: 4-node quadrilaterals (S4 shells in CalculiX); "
-                                      "second order is not available yet")
+                                      "2nd: 8-node quadrilaterals, edge middles on the part")
         grid.addRow("Order:", self.element_order)
         self.smooth = QtGui.QCheckBox("Smooth")
         self.smooth.setToolTip("Move interior nodes on the surfaces to better-shaped quads")
