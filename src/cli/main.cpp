@@ -111,7 +111,7 @@ int run_cli(int argc, char** argv) {
                  "(reported) instead of refusing it");
   mesh->add_option("--order", command.shape.order,
                    "CAD input: 1 four-node quads (default); 2 eight-node quads, a node in the\n"
-                   "middle of each edge on the curve or surface (.vtu, .inp as S8R, .json)")
+                   "middle of each edge on the curve or surface (.vtu, .inp as S8R, .msh, .json)")
       ->type_name("1|2")
       ->check(CLI::IsMember({1, 2}).description(""));
   mesh->add_option("--threads", command.shape.threads,

@@ -100,7 +100,8 @@ void print_jacobian_histogram(std::ostream& out, const QualitySummary& quality) 
 void print_summary(std::ostream& out, const MeshCommand& command, const ShapeMesh& mesh,
                    const QualitySummary& quality, double seconds, const ShapeMeshResult* shape) {
   out << command.input << " -> " << command.output << "\n"
-      << "  nodes " << mesh.nodes.size() << ", quads " << mesh.quads.size() << "\n";
+      << "  nodes " << mesh.nodes.size() << ", quads " << mesh.quads.size()
+      << (mesh.second_order() ? " (8-node: corners and edge middles)" : "") << "\n";
   if (shape) {
     out << "  edge size " << shape->size << "; " << shape->changes.size()
         << " edge count(s) changed for even faces";
@@ -248,8 +249,8 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
       throw InputError(command.input + ": --order 2 needs a CAD input: a boundary file has no curve or surface "
                        "for the mid-edge nodes");
     }
-    if (format == OutputFormat::msh || format == OutputFormat::svg) {
-      throw InputError(command.output + ": second-order quads are written as .vtu, .inp or .json");
+    if (format == OutputFormat::svg) {
+      throw InputError(command.output + ": second-order quads are written as .vtu, .inp, .msh or .json");
     }
   }
   check_output_location(command.output);

@@ -16,12 +16,13 @@ namespace tquad {
 
 namespace {
 
-constexpr int gmsh_quad = 3;  // 4-node quadrangle
+constexpr int gmsh_quad = 3;            // 4-node quadrangle
+constexpr int gmsh_quadratic_quad = 16;  // 8-node second-order quadrangle (corners, then edge middles)
 
 std::string entity_tag(const FaceMesh& f) { return std::to_string(static_cast<std::int64_t>(f.face) + 1); }
 
 // The nodes each face record lists: node i belongs to the first record whose quads
-// use it. Returned as a counting sort: nodes of record r are
+// use it (as a corner or, at second order, an edge middle). Returned as a counting sort: nodes of record r are
 // order[start[r] .. start[r + 1]), ascending.
 struct NodeBlocks {
   std::vector<std::size_t> start;
@@ -34,7 +35,7 @@ NodeBlocks node_blocks(const ShapeMesh& mesh) {
   for (std::size_t r = 0; r < records; ++r) {
     const FaceMesh& f = mesh.faces[r];
     for (std::int64_t k = f.first_quad; k < f.first_quad + f.quad_count; ++k) {
-      for (NodeId id : mesh.quads[static_cast<std::size_t>(k)]) {
+      for (NodeId id : mesh.element_nodes(static_cast<std::size_t>(k))) {
         if (owner[static_cast<std::size_t>(id)] < 0) owner[static_cast<std::size_t>(id)] = static_cast<std::int32_t>(r);
       }
     }
@@ -81,9 +82,7 @@ void append_bounding_box(std::string& text, const ShapeMesh& mesh, const FaceMes
 
 void write_msh(std::ostream& out, const ShapeMesh& mesh) {
   check_shape_mesh(mesh);
-  if (mesh.second_order()) {
-    throw std::invalid_argument("the .msh writer writes first-order quads only; write second order as .vtu, .inp or .json");
-  }
+  const int element_type = mesh.second_order() ? gmsh_quadratic_quad : gmsh_quad;
   std::string text = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
 
   const std::size_t records = mesh.faces.size();
@@ -142,10 +141,10 @@ void write_msh(std::ostream& out, const ShapeMesh& mesh) {
           (elements == 0 ? std::string("0 0") : "1 " + std::to_string(elements)) + "\n";
   for (const FaceMesh& f : mesh.faces) {
     if (f.quad_count == 0) continue;
-    text += "2 " + entity_tag(f) + " " + std::to_string(gmsh_quad) + " " + std::to_string(f.quad_count) + "\n";
+    text += "2 " + entity_tag(f) + " " + std::to_string(element_type) + " " + std::to_string(f.quad_count) + "\n";
     for (std::int64_t k = f.first_quad; k < f.first_quad + f.quad_count; ++k) {
       text += std::to_string(k + 1);
-      for (NodeId id : mesh.quads[static_cast<std::size_t>(k)]) {
+      for (NodeId id : mesh.element_nodes(static_cast<std::size_t>(k))) {
         text += ' ';
         text += std::to_string(static_cast<std::int64_t>(id) + 1);
       }

@@ -374,6 +374,8 @@ TEST_F(ShapeCli, SecondOrderIsWrittenAsEightNodeQuads) {
   const json second = report_of(shape_file("cylinder.brep"), "second.json", {"--order", "2"});
   ASSERT_FALSE(HasFailure());
   EXPECT_EQ(second["quads"], first["quads"]);
+  EXPECT_EQ(first["nodes_per_quad"], 4);
+  EXPECT_EQ(second["nodes_per_quad"], 8);
   // A closed surface: each of the 4 q edges is in two quads, so 2 q middles.
   EXPECT_EQ(second["nodes"].get<long long>(), first["nodes"].get<long long>() + 2 * first["quads"].get<long long>());
   const json mesh = read_json("second.json");
@@ -386,13 +388,14 @@ TEST_F(ShapeCli, SecondOrderIsWrittenAsEightNodeQuads) {
   EXPECT_NE(inp.find("TYPE=S8R"), std::string::npos);
   EXPECT_EQ(inp.find("TYPE=S4"), std::string::npos);
   if (!python_module_available("meshio")) GTEST_SKIP() << "meshio is not importable by " << system_python;
-  for (const std::string file : {"second.inp", "second.vtu"}) {
-    if (file == "second.vtu") mesh_ok(shape_file("cylinder.brep"), file, {"--order", "2"});
+  for (const std::string file : {"second.inp", "second.vtu", "second.msh"}) {
+    if (file != "second.inp") mesh_ok(shape_file("cylinder.brep"), file, {"--order", "2"});
     const RunResult r = run_program(system_python, {"-c", meshio_cells_script, path("cells.json"), path(file)});
     ASSERT_EQ(r.exit_status, 0) << r.out << r.err;
     const json cells = read_json("cells.json");
     EXPECT_EQ(cells["points"], second["nodes"]) << file;
-    ASSERT_EQ(cells["cells"].size(), file == "second.inp" ? 3u : 1u) << file << ": " << cells.dump();  // .inp: a block per face
+    // .inp and .msh: a block per face
+    ASSERT_EQ(cells["cells"].size(), file == "second.vtu" ? 1u : 3u) << file << ": " << cells.dump();
     long long quads = 0;
     for (const json& block : cells["cells"]) {
       EXPECT_EQ(block[0], "quad8") << file;
@@ -406,7 +409,7 @@ TEST_F(ShapeCli, SecondOrderNeedsACadInputAndAFormatThatHoldsIt) {
   std::vector<int> corners;
   const std::string square = boundary_file("square.json", straight_loop({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {2, 2, 2, 2}, corners), corners);
   expect_refused(square, {"--order", "2"}, {"--order 2", "CAD input"});
-  expect_refused(shape_file("cylinder.brep"), {"--order", "2"}, {".vtu, .inp or .json"}, "cylinder.msh");
+  expect_refused(shape_file("cylinder.brep"), {"--order", "2"}, {".vtu, .inp, .msh or .json"}, "cylinder.svg");
   expect_refused(shape_file("cylinder.brep"), {"--order", "3"}, {"--order"});
 }
 
