@@ -292,6 +292,7 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
   if (command.report_json) {
     nlohmann::ordered_json report = mesh_report_json(shape, quality);
     if (kind == InputKind::shape) {
+      report["nodes_per_quad"] = shape.nodes_per_element();  // 4, or 8 at --order 2
       report["edge_size"] = shape_result.size;
       report["refinement_rounds"] = shape_result.refinement_rounds;
       report["off_surface_quads"] = shape_result.off_surface;

@@ -18,7 +18,6 @@ nlohmann::ordered_json mesh_report_json(const ShapeMesh& mesh, const QualitySumm
   report["nodes"] = mesh.nodes.size();
   report["quads"] = mesh.quads.size();
   report["triangles"] = 0;
-  report["nodes_per_quad"] = mesh.nodes_per_element();  // 4, or 8 at second order
   nlohmann::ordered_json q;
   q["lee_lo"] = quality_stats_json(quality.lee_lo);
   q["scaled_jacobian"] = quality_stats_json(quality.scaled_jacobian);
