@@ -1,18 +1,23 @@
 // What the shape fuzz targets (fuzz_brep, fuzz_step) demand of a shape that was read:
 // meshed with the CLI's defaults on one thread (every refused face listed, as with
 // --keep-going) at a coarse size (the bounding-box diagonal / 8, so that a run takes
-// milliseconds), it ends in an InputError or in a mesh that passes check_shape_mesh
-// with finite node coordinates and no inverted quad (a scaled Jacobian below
-// -kSurfaceInvertedBelow: those faces are refused unless allowed). Anything else, another exception,
-// a crash, a hang or a sanitizer report, is a bug.
+// milliseconds) and at second order (the mid-edge nodes too), it ends in an
+// InputError or in a mesh that passes check_shape_mesh with finite node coordinates,
+// no inverted quad (a scaled Jacobian below -kSurfaceInvertedBelow: those faces are
+// refused unless allowed) and one middle node per quad edge, shared by the quads on
+// both sides. Anything else, another exception, a crash, a hang or a sanitizer
+// report, is a bug.
 #pragma once
 
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
 #include <Standard_Failure.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <map>
+#include <utility>
 
 #include "core/input_error.h"
 #include "core/quality.h"
@@ -43,6 +48,7 @@ inline void mesh_and_check(const ReadShape& read) {
   }
   options.threads = 1;
   options.keep_going = true;
+  options.order = 2;
   options.templates.max_quads = 200'000;
   for (int f : read.invalid_faces) options.damaged_faces[f] = kInvalidFaceReason;
   ShapeMeshResult result;
@@ -59,6 +65,14 @@ inline void mesh_and_check(const ReadShape& read) {
   }
   for (double sj : mesh.scaled_jacobian) {
     if (!(sj >= -kSurfaceInvertedBelow)) std::abort();
+  }
+  if (mesh.mid_nodes.size() != mesh.quads.size()) std::abort();
+  std::map<std::pair<NodeId, NodeId>, NodeId> middle_of;
+  for (std::size_t k = 0; k < mesh.quads.size(); ++k) {
+    for (int i = 0; i < 4; ++i) {
+      const auto edge = std::minmax(mesh.quads[k][i], mesh.quads[k][(i + 1) % 4]);
+      if (middle_of.emplace(edge, mesh.mid_nodes[k][i]).first->second != mesh.mid_nodes[k][i]) std::abort();
+    }
   }
 }
 
