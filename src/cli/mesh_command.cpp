@@ -293,6 +293,7 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
     nlohmann::ordered_json report = mesh_report_json(shape, quality);
     if (kind == InputKind::shape) {
       report["nodes_per_quad"] = shape.nodes_per_element();  // 4, or 8 at --order 2
+      if (shape.second_order()) report["straightened_mid_nodes"] = shape_result.straightened_mid_nodes;
       report["edge_size"] = shape_result.size;
       report["refinement_rounds"] = shape_result.refinement_rounds;
       report["off_surface_quads"] = shape_result.off_surface;

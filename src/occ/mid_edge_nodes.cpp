@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <unordered_map>
 
+#include "core/quadratic_quad.h"
 #include "occ/occ_vec.h"
 
 namespace tquad {
@@ -48,8 +49,8 @@ Vec3 surface_middle(const BRepAdaptor_Surface& surface, const FaceMeshResult& m,
 
 }  // namespace
 
-void add_mid_edge_nodes(const ShapeIndex& index, const std::vector<EdgeNodes>& edges,
-                        const std::vector<const FaceMeshResult*>& face_meshes, ShapeMesh& mesh) {
+long long add_mid_edge_nodes(const ShapeIndex& index, const std::vector<EdgeNodes>& edges,
+                             const std::vector<const FaceMeshResult*>& face_meshes, ShapeMesh& mesh) {
   std::unordered_map<std::uint64_t, NodeId> middle;
   middle.reserve(2 * mesh.quads.size() + 16);
   add_curve_middles(index, edges, mesh, middle);
@@ -73,6 +74,7 @@ void add_mid_edge_nodes(const ShapeIndex& index, const std::vector<EdgeNodes>& e
       }
     }
   }
+  return straighten_folded_quads(mesh);
 }
 
 }  // namespace tquad

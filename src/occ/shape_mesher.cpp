@@ -366,7 +366,7 @@ class ShapeMeshContext {
   void add_middles() {
     std::vector<const FaceMeshResult*> face_meshes;
     for (const FaceMesh& record : result_.mesh.faces) face_meshes.push_back(&outcomes_[record.face].mesh);
-    add_mid_edge_nodes(index_, edges_, face_meshes, result_.mesh);
+    result_.straightened_mid_nodes = add_mid_edge_nodes(index_, edges_, face_meshes, result_.mesh);
   }
 
   void assemble() {

@@ -3,7 +3,15 @@
 // (a hole's rim stays round) and on the surface inside a face.
 #include <gtest/gtest.h>
 
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Wire.hxx>
+#include <gp_Ax2.hxx>
+#include <gp_Circ.hxx>
+#include <gp_Pln.hxx>
 
 #include <cmath>
 #include <map>
@@ -11,6 +19,7 @@
 #include <string>
 
 #include "core/input_error.h"
+#include "core/quadratic_quad.h"
 #include "occ/shape_mesher.h"
 #include "occ/shape_reader.h"
 
@@ -85,6 +94,31 @@ TEST(SecondOrder, PlateWithHoleKeepsTheHoleRound) {
     }
   }
   EXPECT_GT(rim_middles, 8);
+}
+
+TEST(SecondOrder, ThinRingQuadsDoNotFold) {
+  // A ring 0.1 wide on a radius of 10: its rims' segments bulge (sagitta about 0.7)
+  // far past the ring's width, but both rims bend alike, so the quads stay valid.
+  const gp_Ax2 axis(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1));
+  const TopoDS_Wire outer = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 10.0)));
+  TopoDS_Wire inner = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 9.9)));
+  inner.Reverse();
+  BRepBuilderAPI_MakeFace ring(gp_Pln(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), outer);
+  ring.Add(inner);
+  ShapeMeshOptions options;
+  options.size = 4.0;
+  options.order = 2;
+  const ShapeMeshResult result = mesh_shape(ring.Face(), options);
+  const ShapeMesh& mesh = result.mesh;
+  expect_conforming_middles(mesh);
+  for (std::size_t k = 0; k < mesh.quads.size(); ++k) {
+    std::array<Vec3, 8> p;
+    for (int i = 0; i < 4; ++i) {
+      p[i] = mesh.nodes[mesh.quads[k][i]];
+      p[4 + i] = mesh.nodes[mesh.mid_nodes[k][i]];
+    }
+    EXPECT_GT(quadratic_quad_min_scaled_jacobian(p), 0.0) << "quad " << k << " folds";
+  }
 }
 
 TEST(SecondOrder, FirstOrderHasNoMiddlesAndOtherOrdersAreRefused) {
