@@ -18,20 +18,31 @@ std::uint64_t edge_key(NodeId a, NodeId b) {
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
 }
 
-// The middle node of every segment of the CAD edges: the curve at the middle parameter.
-void add_curve_middles(const ShapeIndex& index, const std::vector<EdgeNodes>& edges, ShapeMesh& mesh,
-                       std::unordered_map<std::uint64_t, NodeId>& middle) {
+// Where each CAD edge segment is, by its two end nodes (the mesh's ids): the edge
+// and the segment's index along it.
+struct Segment {
+  int edge;
+  std::size_t index;
+};
+std::unordered_map<std::uint64_t, Segment> curve_segments(const std::vector<EdgeNodes>& edges,
+                                                           const std::vector<NodeId>& node_id) {
+  std::unordered_map<std::uint64_t, Segment> segments;
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const EdgeNodes& en = edges[e];
-    if (en.degenerate || en.nodes.size() < 2) continue;
-    const BRepAdaptor_Curve curve(index.edge(static_cast<int>(e)));
+    if (en.degenerate) continue;
     for (std::size_t i = 0; i + 1 < en.nodes.size(); ++i) {
-      const std::uint64_t key = edge_key(en.nodes[i], en.nodes[i + 1]);
-      if (middle.count(key)) continue;  // two edges between the same two nodes: the first's
-      middle.emplace(key, static_cast<NodeId>(mesh.nodes.size()));
-      mesh.nodes.push_back(to_vec3(curve.Value(0.5 * (en.params[i] + en.params[i + 1]))));
+      const NodeId a = node_id[en.nodes[i]], b = node_id[en.nodes[i + 1]];
+      if (a < 0 || b < 0) continue;  // an edge of faces not meshed
+      segments.emplace(edge_key(a, b), Segment{static_cast<int>(e), i});  // two edges between two nodes: the first's
     }
   }
+  return segments;
+}
+
+// The middle of a CAD edge segment: the edge's curve at the middle parameter.
+Vec3 curve_middle(const ShapeIndex& index, const std::vector<EdgeNodes>& edges, const Segment& s) {
+  const EdgeNodes& en = edges[static_cast<std::size_t>(s.edge)];
+  return to_vec3(BRepAdaptor_Curve(index.edge(s.edge)).Value(0.5 * (en.params[s.index] + en.params[s.index + 1])));
 }
 
 // The surface point halfway between two nodes of a face in its mesh coordinates.
@@ -50,10 +61,11 @@ Vec3 surface_middle(const BRepAdaptor_Surface& surface, const FaceMeshResult& m,
 }  // namespace
 
 long long add_mid_edge_nodes(const ShapeIndex& index, const std::vector<EdgeNodes>& edges,
+                             const std::vector<NodeId>& node_id,
                              const std::vector<const FaceMeshResult*>& face_meshes, ShapeMesh& mesh) {
+  const std::unordered_map<std::uint64_t, Segment> segments = curve_segments(edges, node_id);
   std::unordered_map<std::uint64_t, NodeId> middle;
   middle.reserve(2 * mesh.quads.size() + 16);
-  add_curve_middles(index, edges, mesh, middle);
   mesh.mid_nodes.assign(mesh.quads.size(), Quad{});
   for (std::size_t r = 0; r < mesh.faces.size(); ++r) {
     const FaceMesh& record = mesh.faces[r];
@@ -65,9 +77,13 @@ long long add_mid_edge_nodes(const ShapeIndex& index, const std::vector<EdgeNode
       const Quad& l = m.quads[static_cast<std::size_t>(k)];
       for (int i = 0; i < 4; ++i) {
         const int j = (i + 1) % 4;
-        const auto [it, added] = middle.emplace(edge_key(g[i], g[j]), static_cast<NodeId>(mesh.nodes.size()));
+        const std::uint64_t key = edge_key(g[i], g[j]);
+        const auto [it, added] = middle.emplace(key, static_cast<NodeId>(mesh.nodes.size()));
         if (added) {
-          const Vec3 p = surface_middle(surface, m, l[i], l[j], mesh.nodes[g[i]], mesh.nodes[g[j]]);
+          const auto segment = segments.find(key);
+          const Vec3 p = segment != segments.end()
+                             ? curve_middle(index, edges, segment->second)
+                             : surface_middle(surface, m, l[i], l[j], mesh.nodes[g[i]], mesh.nodes[g[j]]);
           mesh.nodes.push_back(p);
         }
         mesh.mid_nodes[global][i] = it->second;

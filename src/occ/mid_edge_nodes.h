@@ -19,12 +19,14 @@ namespace tquad {
 
 // Fills mesh.mid_nodes (one entry per quad) and appends the middle nodes to
 // mesh.nodes. `face_meshes[r]` is the result whose quads are mesh.faces[r]'s, in the
-// same order (local numbering: FaceMeshResult); `edges` the CAD edges' nodes. The
+// same order (local numbering: FaceMeshResult); `edges` the CAD edges' nodes, whose
+// ids `node_id` turns into the mesh's (-1: a node the mesh dropped). The
 // order of the new nodes follows the quads, so the output does not depend on threads.
 // A quad that its curved middles would fold (quadratic_quad.h: a scaled Jacobian at
 // or below 0 somewhere) gets straight edges instead; returns how many middles were
 // put back on their chords that way.
 long long add_mid_edge_nodes(const ShapeIndex& index, const std::vector<EdgeNodes>& edges,
+                             const std::vector<NodeId>& node_id,
                              const std::vector<const FaceMeshResult*>& face_meshes, ShapeMesh& mesh);
 
 }  // namespace tquad

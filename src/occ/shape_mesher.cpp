@@ -115,8 +115,9 @@ void check_requested_corners(const ShapeIndex& index, const std::vector<char>& m
 }
 
 // Removes the nodes no quad uses (vertices and edge nodes of faces not meshed or
-// refused, seam nodes of refused faces), keeping the others in order.
-void drop_unused_nodes(ShapeMesh& mesh) {
+// refused, seam nodes of refused faces), keeping the others in order; returns each
+// old node's new index (-1: removed).
+std::vector<NodeId> drop_unused_nodes(ShapeMesh& mesh) {
   std::vector<NodeId> new_id(mesh.nodes.size(), -1);
   for (const Quad& q : mesh.quads) for (NodeId n : q) new_id[n] = 0;
   NodeId next = 0;
@@ -127,6 +128,7 @@ void drop_unused_nodes(ShapeMesh& mesh) {
   }
   mesh.nodes.resize(next);
   for (Quad& q : mesh.quads) for (NodeId& n : q) n = new_id[n];
+  return new_id;
 }
 
 // Runs job(i) for i in [0, count) on `threads` workers. An exception in a job stops
@@ -366,7 +368,7 @@ class ShapeMeshContext {
   void add_middles() {
     std::vector<const FaceMeshResult*> face_meshes;
     for (const FaceMesh& record : result_.mesh.faces) face_meshes.push_back(&outcomes_[record.face].mesh);
-    result_.straightened_mid_nodes = add_mid_edge_nodes(index_, edges_, face_meshes, result_.mesh);
+    result_.straightened_mid_nodes = add_mid_edge_nodes(index_, edges_, new_node_id_, face_meshes, result_.mesh);
   }
 
   void assemble() {
@@ -413,7 +415,7 @@ class ShapeMeshContext {
       result_.meshing_seconds += m.meshing_seconds;
       result_.smoothing_seconds += m.smoothing_seconds;
     }
-    drop_unused_nodes(mesh);
+    new_node_id_ = drop_unused_nodes(mesh);
   }
 
   const TopoDS_Shape& shape_;
@@ -430,6 +432,7 @@ class ShapeMeshContext {
   std::vector<EdgeNodes> previous_edges_;  // the last round's, while meshing the next
   std::vector<Vec3> previous_nodes_;
   std::vector<FaceOutcome> outcomes_;
+  std::vector<NodeId> new_node_id_;  // assemble's renumbering: edges_' ids -> the mesh's (-1: dropped)
 };
 
 }  // namespace

@@ -34,8 +34,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <set>
 
 #include "core/input_error.h"
+#include "core/quadratic_quad.h"
 #include "core/quality.h"
 #include "occ/face_mesher.h"
 #include "occ/shape_index.h"
@@ -102,6 +104,7 @@ FileReport check_file(const std::string& path) {
   const ShapeIndex index(shape);
   ShapeMeshOptions options;
   options.keep_going = true;
+  options.order = 2;  // the same quads as at first order, with their edge middles checked too
   const ShapeMeshResult result = mesh_shape(shape, options);
   const ShapeMesh& mesh = result.mesh;
   report.faces = index.face_count();
@@ -126,6 +129,24 @@ FileReport check_file(const std::string& path) {
       ++uses[{std::min(a, b), std::max(a, b)}];
     }
   }
+  // One middle per mesh edge, shared by its quads, and no quad folded by its middles.
+  EXPECT_EQ(mesh.mid_nodes.size(), mesh.quads.size()) << path;
+  if (mesh.mid_nodes.size() != mesh.quads.size()) return report;
+  std::map<std::pair<NodeId, NodeId>, NodeId> middle_of;
+  for (std::size_t k = 0; k < mesh.quads.size(); ++k) {
+    for (int i = 0; i < 4; ++i) {
+      const NodeId m = mesh.mid_nodes[k][i];
+      const auto [it, added] = middle_of.emplace(std::minmax(mesh.quads[k][i], mesh.quads[k][(i + 1) % 4]), m);
+      EXPECT_EQ(it->second, m) << path << ": quad " << k << " edge " << i << " has another middle than its neighbour";
+    }
+    EXPECT_GT(quadratic_quad_min_scaled_jacobian(element_positions(mesh, k)), 0.0) << path << ": quad " << k << " folds";
+  }
+  EXPECT_EQ(mesh.nodes.size(), uses.size() + std::set<NodeId>([&] {
+                                 std::set<NodeId> corners;
+                                 for (const Quad& q : mesh.quads) corners.insert(q.begin(), q.end());
+                                 return corners;
+                               }()).size())
+      << path << ": nodes are the corners and one middle per edge";
   const bool watertight_expected = report.closed && report.refused == 0;
   for (const auto& [edge, count] : uses) {
     EXPECT_LE(count, faces_per_edge) << path << ": mesh edge " << edge.first << "-" << edge.second << " in " << count << " quads";
@@ -163,6 +184,13 @@ FileReport check_file(const std::string& path) {
         centre += 0.25 * p;
         surface.ValueOfUV(gp_Pnt(p.x, p.y, p.z).Transformed(to_local), face_tolerance);
         EXPECT_LE(surface.Gap(), face_tolerance) << path << " face " << f.face << " node " << n;
+      }
+      // Middles on the surface, or on their chords where they were straightened.
+      for (int i = 0; i < 4; ++i) {
+        const Vec3& m = mesh.nodes[mesh.mid_nodes[k][i]];
+        if (m == 0.5 * (mesh.nodes[q[i]] + mesh.nodes[q[(i + 1) % 4]])) continue;
+        surface.ValueOfUV(gp_Pnt(m.x, m.y, m.z).Transformed(to_local), face_tolerance);
+        EXPECT_LE(surface.Gap(), face_tolerance) << path << " face " << f.face << ": middle of quad " << k << " edge " << i;
       }
       // Each corner against the surface normal at its node (at the centre for a pole).
       for (int i = 0; i < 4; ++i) {
