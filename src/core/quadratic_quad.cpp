@@ -41,12 +41,27 @@ std::array<Vec3, 8> element_positions(const ShapeMesh& mesh, std::size_t k) {
   return p;
 }
 
+namespace {
+
+// Whether quad k's middles are on its chords (up to rounding: a plane's middles come
+// from its parameters): such a quad folds only if its corners do.
+bool straight_edges(const ShapeMesh& mesh, std::size_t k) {
+  for (int i = 0; i < 4; ++i) {
+    const Vec3& a = mesh.nodes[mesh.quads[k][i]];
+    const Vec3& b = mesh.nodes[mesh.quads[k][(i + 1) % 4]];
+    if (distance(mesh.nodes[mesh.mid_nodes[k][i]], 0.5 * (a + b)) > 1e-9 * distance(a, b)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 long long straighten_folded_quads(ShapeMesh& mesh) {
   long long straightened = 0;
   for (int pass = 0; pass < 4; ++pass) {
     bool changed = false;
     for (std::size_t k = 0; k < mesh.quads.size(); ++k) {
-      if (quadratic_quad_min_scaled_jacobian(element_positions(mesh, k)) > 0) continue;
+      if (straight_edges(mesh, k) || quadratic_quad_min_scaled_jacobian(element_positions(mesh, k)) > 0) continue;
       for (int i = 0; i < 4; ++i) {
         const Vec3 chord = 0.5 * (mesh.nodes[mesh.quads[k][i]] + mesh.nodes[mesh.quads[k][(i + 1) % 4]]);
         Vec3& middle = mesh.nodes[mesh.mid_nodes[k][i]];

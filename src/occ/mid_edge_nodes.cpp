@@ -4,8 +4,8 @@
 #include <BRepAdaptor_Surface.hxx>
 
 #include <cstdint>
-#include <unordered_map>
 
+#include "core/mesh_edges.h"
 #include "core/quadratic_quad.h"
 #include "occ/occ_vec.h"
 
@@ -13,27 +13,26 @@ namespace tquad {
 
 namespace {
 
-std::uint64_t edge_key(NodeId a, NodeId b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-}
-
-// Where each CAD edge segment is, by its two end nodes (the mesh's ids): the edge
-// and the segment's index along it.
+// A CAD edge segment: the edge and the segment's index along it (edge -1: none).
 struct Segment {
-  int edge;
-  std::size_t index;
+  int edge = -1;
+  std::size_t index = 0;
 };
-std::unordered_map<std::uint64_t, Segment> curve_segments(const std::vector<EdgeNodes>& edges,
-                                                           const std::vector<NodeId>& node_id) {
-  std::unordered_map<std::uint64_t, Segment> segments;
+
+// For each mesh edge, the CAD edge segment it is (found by its end nodes, in the
+// mesh's ids), if any.
+std::vector<Segment> curve_segments(const std::vector<EdgeNodes>& edges, const std::vector<NodeId>& node_id,
+                                    const MeshEdges& mesh_edges) {
+  std::vector<Segment> segments(mesh_edges.count());
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const EdgeNodes& en = edges[e];
     if (en.degenerate) continue;
     for (std::size_t i = 0; i + 1 < en.nodes.size(); ++i) {
       const NodeId a = node_id[en.nodes[i]], b = node_id[en.nodes[i + 1]];
       if (a < 0 || b < 0) continue;  // an edge of faces not meshed
-      segments.emplace(edge_key(a, b), Segment{static_cast<int>(e), i});  // two edges between two nodes: the first's
+      const std::size_t edge = mesh_edges.index(a, b);
+      if (edge == MeshEdges::npos || segments[edge].edge >= 0) continue;  // two CAD edges between two nodes: the first
+      segments[edge] = Segment{static_cast<int>(e), i};
     }
   }
   return segments;
@@ -63,9 +62,10 @@ Vec3 surface_middle(const BRepAdaptor_Surface& surface, const FaceMeshResult& m,
 long long add_mid_edge_nodes(const ShapeIndex& index, const std::vector<EdgeNodes>& edges,
                              const std::vector<NodeId>& node_id,
                              const std::vector<const FaceMeshResult*>& face_meshes, ShapeMesh& mesh) {
-  const std::unordered_map<std::uint64_t, Segment> segments = curve_segments(edges, node_id);
-  std::unordered_map<std::uint64_t, NodeId> middle;
-  middle.reserve(2 * mesh.quads.size() + 16);
+  const MeshEdges mesh_edges(mesh.nodes.size(), mesh.quads);
+  const std::vector<Segment> segments = curve_segments(edges, node_id, mesh_edges);
+  std::vector<NodeId> middle(mesh_edges.count(), -1);
+  mesh.nodes.reserve(mesh.nodes.size() + mesh_edges.count());
   mesh.mid_nodes.assign(mesh.quads.size(), Quad{});
   for (std::size_t r = 0; r < mesh.faces.size(); ++r) {
     const FaceMesh& record = mesh.faces[r];
@@ -77,16 +77,15 @@ long long add_mid_edge_nodes(const ShapeIndex& index, const std::vector<EdgeNode
       const Quad& l = m.quads[static_cast<std::size_t>(k)];
       for (int i = 0; i < 4; ++i) {
         const int j = (i + 1) % 4;
-        const std::uint64_t key = edge_key(g[i], g[j]);
-        const auto [it, added] = middle.emplace(key, static_cast<NodeId>(mesh.nodes.size()));
-        if (added) {
-          const auto segment = segments.find(key);
-          const Vec3 p = segment != segments.end()
-                             ? curve_middle(index, edges, segment->second)
+        const std::size_t edge = mesh_edges.index(g[i], g[j]);
+        if (middle[edge] < 0) {
+          middle[edge] = static_cast<NodeId>(mesh.nodes.size());
+          const Vec3 p = segments[edge].edge >= 0
+                             ? curve_middle(index, edges, segments[edge])
                              : surface_middle(surface, m, l[i], l[j], mesh.nodes[g[i]], mesh.nodes[g[j]]);
           mesh.nodes.push_back(p);
         }
-        mesh.mid_nodes[global][i] = it->second;
+        mesh.mid_nodes[global][i] = middle[edge];
       }
     }
   }
