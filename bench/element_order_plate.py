@@ -16,9 +16,9 @@ orders approach). Needs freecadcmd, ccx and the build's Python module
 
 import argparse
 import os
-import subprocess
 import sys
-import tempfile
+
+from freecad_script import run_in_freecad
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -94,12 +94,7 @@ def main():
                                    workbench=os.path.join(REPO, "freecad_workbench", "freecad"),
                                    plate=os.path.join(REPO, "resources", "shapes", "plate_with_hole.brep"),
                                    sizes=sizes)
-    with tempfile.TemporaryDirectory() as folder:
-        path = os.path.join(folder, "order.py")
-        with open(path, "w") as f:
-            f.write(script)
-        run = subprocess.run(["freecadcmd", "-c", f"exec(open({path!r}).read())"],
-                             capture_output=True, text=True)
+    run = run_in_freecad(script)
     rows = [line[4:] for line in run.stdout.splitlines() if line.startswith("ROW ")]
     if run.returncode != 0 or not rows:
         print(run.stdout[-3000:] + run.stderr[-3000:], file=sys.stderr)

@@ -15,9 +15,9 @@ new document each time). Each step the least of --repeat runs. Needs freecadcmd 
 
 import argparse
 import os
-import subprocess
 import sys
-import tempfile
+
+from freecad_script import run_in_freecad
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -79,12 +79,7 @@ def main():
     script = INSIDE_FREECAD.format(python=args.python_dir,
                                    workbench=os.path.join(REPO, "freecad_workbench", "freecad"),
                                    side=args.side, size=args.size, repeat=args.repeat)
-    with tempfile.TemporaryDirectory() as folder:
-        path = os.path.join(folder, "transfer.py")
-        with open(path, "w") as f:
-            f.write(script)
-        run = subprocess.run(["freecadcmd", "-c", f"exec(open({path!r}).read())"],
-                             capture_output=True, text=True)
+    run = run_in_freecad(script)
     lines = [line for line in run.stdout.splitlines() if line.startswith(("quads", "tquad", "FemMesh", "assigned",
                                                                           "make_mesh"))]
     if run.returncode != 0 or not lines:

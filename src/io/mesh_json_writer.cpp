@@ -23,6 +23,19 @@ void append_json_double(std::string& text, double value) {
   }
 }
 
+// Rows of four node indices as JSON arrays, one a line.
+void append_index_rows(std::ostream& out, std::string& text, const std::vector<Quad>& rows) {
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    text += k == 0 ? "\n[" : ",\n[";
+    for (int i = 0; i < 4; ++i) {
+      if (i > 0) text += ", ";
+      text += std::to_string(rows[k][i]);
+    }
+    text += ']';
+    flush_if_large(out, text);
+  }
+}
+
 }  // namespace
 
 void write_mesh_json(std::ostream& out, const ShapeMesh& mesh) {
@@ -40,28 +53,10 @@ void write_mesh_json(std::ostream& out, const ShapeMesh& mesh) {
     flush_if_large(out, text);
   }
   text += "\n],\n\"quads\": [";
-  for (std::size_t k = 0; k < mesh.quads.size(); ++k) {
-    const Quad& q = mesh.quads[k];
-    text += k == 0 ? "\n[" : ",\n[";
-    for (int i = 0; i < 4; ++i) {
-      if (i > 0) text += ", ";
-      text += std::to_string(q[i]);
-    }
-    text += ']';
-    flush_if_large(out, text);
-  }
+  append_index_rows(out, text, mesh.quads);
   if (mesh.second_order()) {  // per quad, the nodes in the middle of edges 0-1, 1-2, 2-3, 3-0
     text += "\n],\n\"mid_nodes\": [";
-    for (std::size_t k = 0; k < mesh.mid_nodes.size(); ++k) {
-      const Quad& q = mesh.mid_nodes[k];
-      text += k == 0 ? "\n[" : ",\n[";
-      for (int i = 0; i < 4; ++i) {
-        if (i > 0) text += ", ";
-        text += std::to_string(q[i]);
-      }
-      text += ']';
-      flush_if_large(out, text);
-    }
+    append_index_rows(out, text, mesh.mid_nodes);
   }
   text += "\n],\n\"faces\": [";
   for (std::size_t r = 0; r < mesh.faces.size(); ++r) {

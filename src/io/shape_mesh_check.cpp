@@ -10,6 +10,18 @@ namespace {
 
 [[noreturn]] void fail(const std::string& what) { throw std::invalid_argument("invalid ShapeMesh: " + what); }
 
+void check_node_indices(const char* name, const std::vector<Quad>& rows, std::int64_t node_count) {
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    for (int i = 0; i < 4; ++i) {
+      const NodeId id = rows[k][i];
+      if (id < 0 || id >= node_count) {
+        fail(std::string(name) + "[" + std::to_string(k) + "][" + std::to_string(i) + "] = " + std::to_string(id) +
+             " is not a node index (" + std::to_string(node_count) + " nodes)");
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void check_shape_mesh(const ShapeMesh& mesh) {
@@ -20,28 +32,12 @@ void check_shape_mesh(const ShapeMesh& mesh) {
            std::to_string(mesh.quads.size()) + " quads");
     }
   }
-  for (std::size_t k = 0; k < mesh.quads.size(); ++k) {
-    for (int i = 0; i < 4; ++i) {
-      const NodeId id = mesh.quads[k][i];
-      if (id < 0 || id >= node_count) {
-        fail("quads[" + std::to_string(k) + "][" + std::to_string(i) + "] = " + std::to_string(id) +
-             " is not a node index (" + std::to_string(node_count) + " nodes)");
-      }
-    }
-  }
+  check_node_indices("quads", mesh.quads, node_count);
   if (mesh.second_order() && mesh.mid_nodes.size() != mesh.quads.size()) {
     fail("mid_nodes has " + std::to_string(mesh.mid_nodes.size()) + " entries for " +
          std::to_string(mesh.quads.size()) + " quads");
   }
-  for (std::size_t k = 0; k < mesh.mid_nodes.size(); ++k) {
-    for (int i = 0; i < 4; ++i) {
-      const NodeId id = mesh.mid_nodes[k][i];
-      if (id < 0 || id >= node_count) {
-        fail("mid_nodes[" + std::to_string(k) + "][" + std::to_string(i) + "] = " + std::to_string(id) +
-             " is not a node index (" + std::to_string(node_count) + " nodes)");
-      }
-    }
-  }
+  check_node_indices("mid_nodes", mesh.mid_nodes, node_count);
   std::unordered_set<int> meshed;
   std::int64_t next = 0;
   for (std::size_t r = 0; r < mesh.faces.size(); ++r) {
