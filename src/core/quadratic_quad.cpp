@@ -43,13 +43,17 @@ std::array<Vec3, 8> element_positions(const ShapeMesh& mesh, std::size_t k) {
 
 namespace {
 
+// The middle of quad k's straight edge i (from corner i to corner i + 1).
+Vec3 chord_middle(const ShapeMesh& mesh, std::size_t k, int i) {
+  return 0.5 * (mesh.nodes[mesh.quads[k][i]] + mesh.nodes[mesh.quads[k][(i + 1) % 4]]);
+}
+
 // Whether quad k's middles are on its chords (up to rounding: a plane's middles come
 // from its parameters): such a quad folds only if its corners do.
 bool straight_edges(const ShapeMesh& mesh, std::size_t k) {
   for (int i = 0; i < 4; ++i) {
-    const Vec3& a = mesh.nodes[mesh.quads[k][i]];
-    const Vec3& b = mesh.nodes[mesh.quads[k][(i + 1) % 4]];
-    if (distance(mesh.nodes[mesh.mid_nodes[k][i]], 0.5 * (a + b)) > 1e-9 * distance(a, b)) return false;
+    const double length = distance(mesh.nodes[mesh.quads[k][i]], mesh.nodes[mesh.quads[k][(i + 1) % 4]]);
+    if (distance(mesh.nodes[mesh.mid_nodes[k][i]], chord_middle(mesh, k, i)) > 1e-9 * length) return false;
   }
   return true;
 }
@@ -63,7 +67,7 @@ long long straighten_folded_quads(ShapeMesh& mesh) {
     for (std::size_t k = 0; k < mesh.quads.size(); ++k) {
       if (straight_edges(mesh, k) || quadratic_quad_min_scaled_jacobian(element_positions(mesh, k)) > 0) continue;
       for (int i = 0; i < 4; ++i) {
-        const Vec3 chord = 0.5 * (mesh.nodes[mesh.quads[k][i]] + mesh.nodes[mesh.quads[k][(i + 1) % 4]]);
+        const Vec3 chord = chord_middle(mesh, k, i);
         Vec3& middle = mesh.nodes[mesh.mid_nodes[k][i]];
         if (distance(middle, chord) > 0) {
           middle = chord;

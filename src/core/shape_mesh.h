@@ -3,6 +3,8 @@
 // the file writers and the report take.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -55,15 +57,27 @@ struct ShapeMesh {
   std::vector<Quad> mid_nodes;
 
   bool second_order() const { return !mid_nodes.empty(); }
+  int nodes_per_element() const { return second_order() ? 8 : 4; }
+
   // Quad k's nodes in the order of VTK's quadratic quad, CalculiX's S8 and Gmsh's
   // 8-node quadrangle alike: the four corners, then the middles of edges 0-1, 1-2,
-  // 2-3 and 3-0; its four corners alone at first order.
-  std::vector<NodeId> element_nodes(std::size_t k) const {
-    std::vector<NodeId> ids(quads[k].begin(), quads[k].end());
-    if (second_order()) ids.insert(ids.end(), mid_nodes[k].begin(), mid_nodes[k].end());
-    return ids;
+  // 2-3 and 3-0; its four corners alone at first order. A value (the writers call it
+  // for every element: no allocation).
+  struct ElementNodes {
+    std::array<NodeId, 8> ids{};
+    int count = 4;
+    const NodeId* begin() const { return ids.data(); }
+    const NodeId* end() const { return ids.data() + count; }
+  };
+  ElementNodes element_nodes(std::size_t k) const {
+    ElementNodes e;
+    std::copy(quads[k].begin(), quads[k].end(), e.ids.begin());
+    if (second_order()) {
+      std::copy(mid_nodes[k].begin(), mid_nodes[k].end(), e.ids.begin() + 4);
+      e.count = 8;
+    }
+    return e;
   }
-  int nodes_per_element() const { return second_order() ? 8 : 4; }
 };
 
 // One boundary region as a shape of one face (face 0), moving the mesh's arrays.

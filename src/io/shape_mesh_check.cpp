@@ -3,6 +3,9 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_set>
+#include <vector>
+
+#include "core/mesh_edges.h"
 
 namespace tquad {
 
@@ -18,6 +21,27 @@ void check_node_indices(const char* name, const std::vector<Quad>& rows, std::in
         fail(std::string(name) + "[" + std::to_string(k) + "][" + std::to_string(i) + "] = " + std::to_string(id) +
              " is not a node index (" + std::to_string(node_count) + " nodes)");
       }
+    }
+  }
+}
+
+// Second order: one middle node per mesh edge, the same from every quad of the edge,
+// and no middle is a corner or the middle of another edge.
+void check_shared_middles(const ShapeMesh& mesh) {
+  const MeshEdges edges(mesh.nodes.size(), mesh.quads);
+  std::vector<NodeId> middle(edges.count(), -1);
+  std::vector<char> used(mesh.nodes.size(), 0);  // 1: a corner, 2: a middle
+  for (const Quad& q : mesh.quads) for (NodeId n : q) used[n] = 1;
+  for (std::size_t k = 0; k < mesh.quads.size(); ++k) {
+    for (int i = 0; i < 4; ++i) {
+      const NodeId m = mesh.mid_nodes[k][i];
+      NodeId& known = middle[edges.index(mesh.quads[k][i], mesh.quads[k][(i + 1) % 4])];
+      if (known == m) continue;
+      const std::string where = "mid_nodes[" + std::to_string(k) + "][" + std::to_string(i) + "] = " + std::to_string(m);
+      if (known >= 0) fail(where + ", but another quad of that edge has " + std::to_string(known));
+      if (used[m]) fail(where + " is " + (used[m] == 1 ? "a corner" : "the middle of another edge"));
+      known = m;
+      used[m] = 2;
     }
   }
 }
@@ -38,6 +62,7 @@ void check_shape_mesh(const ShapeMesh& mesh) {
          std::to_string(mesh.quads.size()) + " quads");
   }
   check_node_indices("mid_nodes", mesh.mid_nodes, node_count);
+  if (mesh.second_order()) check_shared_middles(mesh);
   std::unordered_set<int> meshed;
   std::int64_t next = 0;
   for (std::size_t r = 0; r < mesh.faces.size(); ++r) {

@@ -5,7 +5,10 @@
 //     starts at quad 0, each next one starts where the previous ended, the last ends at
 //     quads.size() (a record may own 0 quads);
 //   - face indices are >= 0 and unique; a refused face is >= 0 and not also meshed;
-//   - the per-quad quality arrays are empty or hold one value per quad.
+//   - the per-quad quality arrays are empty or hold one value per quad;
+//   - at second order, one entry of mid_nodes per quad, valid indices, and one middle
+//     node per mesh edge: the same from every quad of the edge, neither a corner nor
+//     another edge's middle.
 #pragma once
 
 #include "core/shape_mesh.h"

@@ -4,6 +4,7 @@
 #include <BRepAdaptor_Surface.hxx>
 
 #include <cstdint>
+#include <optional>
 
 #include "core/mesh_edges.h"
 #include "core/quadratic_quad.h"
@@ -13,35 +14,26 @@ namespace tquad {
 
 namespace {
 
-// A CAD edge segment: the edge and the segment's index along it (edge -1: none).
-struct Segment {
-  int edge = -1;
-  std::size_t index = 0;
-};
-
-// For each mesh edge, the CAD edge segment it is (found by its end nodes, in the
-// mesh's ids), if any.
-std::vector<Segment> curve_segments(const std::vector<EdgeNodes>& edges, const std::vector<NodeId>& node_id,
-                                    const MeshEdges& mesh_edges) {
-  std::vector<Segment> segments(mesh_edges.count());
+// For each mesh edge that is a segment of a CAD edge (found by its end nodes, in the
+// mesh's ids), the curve at the segment's middle parameter; one curve adaptor per
+// CAD edge. Two CAD edges between the same two nodes: the first one's.
+std::vector<std::optional<Vec3>> curve_middles(const ShapeIndex& index, const std::vector<EdgeNodes>& edges,
+                                               const std::vector<NodeId>& node_id, const MeshEdges& mesh_edges) {
+  std::vector<std::optional<Vec3>> middles(mesh_edges.count());
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const EdgeNodes& en = edges[e];
-    if (en.degenerate) continue;
+    if (en.degenerate || en.nodes.size() < 2) continue;
+    std::optional<BRepAdaptor_Curve> curve;  // only for an edge the mesh has
     for (std::size_t i = 0; i + 1 < en.nodes.size(); ++i) {
       const NodeId a = node_id[en.nodes[i]], b = node_id[en.nodes[i + 1]];
       if (a < 0 || b < 0) continue;  // an edge of faces not meshed
       const std::size_t edge = mesh_edges.index(a, b);
-      if (edge == MeshEdges::npos || segments[edge].edge >= 0) continue;  // two CAD edges between two nodes: the first
-      segments[edge] = Segment{static_cast<int>(e), i};
+      if (edge == MeshEdges::npos || middles[edge]) continue;
+      if (!curve) curve.emplace(index.edge(static_cast<int>(e)));
+      middles[edge] = to_vec3(curve->Value(0.5 * (en.params[i] + en.params[i + 1])));
     }
   }
-  return segments;
-}
-
-// The middle of a CAD edge segment: the edge's curve at the middle parameter.
-Vec3 curve_middle(const ShapeIndex& index, const std::vector<EdgeNodes>& edges, const Segment& s) {
-  const EdgeNodes& en = edges[static_cast<std::size_t>(s.edge)];
-  return to_vec3(BRepAdaptor_Curve(index.edge(s.edge)).Value(0.5 * (en.params[s.index] + en.params[s.index + 1])));
+  return middles;
 }
 
 // The surface point halfway between two nodes of a face in its mesh coordinates.
@@ -63,7 +55,7 @@ long long add_mid_edge_nodes(const ShapeIndex& index, const std::vector<EdgeNode
                              const std::vector<NodeId>& node_id,
                              const std::vector<const FaceMeshResult*>& face_meshes, ShapeMesh& mesh) {
   const MeshEdges mesh_edges(mesh.nodes.size(), mesh.quads);
-  const std::vector<Segment> segments = curve_segments(edges, node_id, mesh_edges);
+  const std::vector<std::optional<Vec3>> on_curves = curve_middles(index, edges, node_id, mesh_edges);
   std::vector<NodeId> middle(mesh_edges.count(), -1);
   mesh.nodes.reserve(mesh.nodes.size() + mesh_edges.count());
   mesh.mid_nodes.assign(mesh.quads.size(), Quad{});
@@ -80,9 +72,8 @@ long long add_mid_edge_nodes(const ShapeIndex& index, const std::vector<EdgeNode
         const std::size_t edge = mesh_edges.index(g[i], g[j]);
         if (middle[edge] < 0) {
           middle[edge] = static_cast<NodeId>(mesh.nodes.size());
-          const Vec3 p = segments[edge].edge >= 0
-                             ? curve_middle(index, edges, segments[edge])
-                             : surface_middle(surface, m, l[i], l[j], mesh.nodes[g[i]], mesh.nodes[g[j]]);
+          const Vec3 p = on_curves[edge] ? *on_curves[edge]
+                                         : surface_middle(surface, m, l[i], l[j], mesh.nodes[g[i]], mesh.nodes[g[j]]);
           mesh.nodes.push_back(p);
         }
         mesh.mid_nodes[global][i] = middle[edge];

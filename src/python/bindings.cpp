@@ -66,6 +66,16 @@ py::dict refused_face_dict(const RefusedFace& f) {
   return d;
 }
 
+// Rows of four node indices (quads, or their edge middles) as an M x 4 int32 array.
+py::array_t<std::int32_t> index_rows(const std::vector<Quad>& rows) {
+  py::array_t<std::int32_t> array({static_cast<py::ssize_t>(rows.size()), py::ssize_t{4}});
+  auto a = array.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < a.shape(0); ++i) {
+    for (int k = 0; k < 4; ++k) a(i, k) = rows[static_cast<std::size_t>(i)][k];
+  }
+  return array;
+}
+
 // The mesh as plain Python data: numpy arrays for nodes and quads (copied once).
 py::dict mesh_dict(const ShapeMesh& mesh, const QualitySummary& quality) {
   py::array_t<double> nodes({static_cast<py::ssize_t>(mesh.nodes.size()), py::ssize_t{3}});
@@ -74,11 +84,6 @@ py::dict mesh_dict(const ShapeMesh& mesh, const QualitySummary& quality) {
     n(i, 0) = mesh.nodes[i].x;
     n(i, 1) = mesh.nodes[i].y;
     n(i, 2) = mesh.nodes[i].z;
-  }
-  py::array_t<std::int32_t> quads({static_cast<py::ssize_t>(mesh.quads.size()), py::ssize_t{4}});
-  auto q = quads.mutable_unchecked<2>();
-  for (py::ssize_t i = 0; i < q.shape(0); ++i) {
-    for (int k = 0; k < 4; ++k) q(i, k) = mesh.quads[i][k];
   }
   py::list faces, refused;
   for (const FaceMesh& f : mesh.faces) {
@@ -104,20 +109,13 @@ py::dict mesh_dict(const ShapeMesh& mesh, const QualitySummary& quality) {
   for (const RefusedFace& f : mesh.refused_faces) refused.append(refused_face_dict(f));
   py::dict out;
   out["nodes"] = nodes;
-  out["quads"] = quads;
+  out["quads"] = index_rows(mesh.quads);
   out["faces"] = faces;
   out["refused_faces"] = refused;
   out["quality"] = quality_dict(quality);
   out["scaled_jacobian"] = numpy_copy(mesh.scaled_jacobian);
   out["lee_lo"] = numpy_copy(mesh.lee_lo);
-  if (mesh.second_order()) {
-    py::array_t<std::int32_t> mids({static_cast<py::ssize_t>(mesh.mid_nodes.size()), py::ssize_t{4}});
-    auto m = mids.mutable_unchecked<2>();
-    for (py::ssize_t i = 0; i < m.shape(0); ++i) {
-      for (int k = 0; k < 4; ++k) m(i, k) = mesh.mid_nodes[i][k];
-    }
-    out["mid_nodes"] = mids;
-  }
+  if (mesh.second_order()) out["mid_nodes"] = index_rows(mesh.mid_nodes);
   return out;
 }
 

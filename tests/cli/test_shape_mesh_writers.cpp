@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_test_support.h"
+#include "core/mesh_edges.h"
 #include "core/quality.h"
 #include "io/inp_writer.h"
 #include "io/mesh_json_reader.h"
@@ -390,6 +391,47 @@ TEST_F(WriterChecks, InconsistentShapeMeshesAreRefusedBeforeWriting) {
   EXPECT_TRUE(files().empty()) << "a refused mesh left a file";
   EXPECT_NO_THROW(check_shape_mesh(two_face_mesh()));
   EXPECT_NO_THROW(check_shape_mesh(ShapeMesh{}));
+}
+
+// two_face_mesh at second order: a middle node per edge, at the edge's middle.
+ShapeMesh two_face_second_order_mesh() {
+  ShapeMesh mesh = two_face_mesh();
+  const MeshEdges edges(mesh.nodes.size(), mesh.quads);
+  std::vector<NodeId> middle(edges.count(), -1);
+  mesh.mid_nodes.resize(mesh.quads.size());
+  for (std::size_t k = 0; k < mesh.quads.size(); ++k) {
+    for (int i = 0; i < 4; ++i) {
+      const NodeId a = mesh.quads[k][i], b = mesh.quads[k][(i + 1) % 4];
+      NodeId& m = middle[edges.index(a, b)];
+      if (m < 0) {
+        m = static_cast<NodeId>(mesh.nodes.size());
+        mesh.nodes.push_back(0.5 * (mesh.nodes[a] + mesh.nodes[b]));
+      }
+      mesh.mid_nodes[k][i] = m;
+    }
+  }
+  return mesh;
+}
+
+TEST_F(WriterChecks, InconsistentSecondOrderMeshesAreRefusedBeforeWriting) {
+  // Quads 0 and 1 share the edge 1-6 (quad 0's edge 1, quad 1's edge 3).
+  std::vector<std::pair<std::string, std::function<void(ShapeMesh&)>>> breakages = {
+      {"a middle per quad", [](ShapeMesh& m) { m.mid_nodes.pop_back(); }},
+      {"middle index", [](ShapeMesh& m) { m.mid_nodes[2][1] = static_cast<NodeId>(m.nodes.size()); }},
+      {"neighbours disagree", [](ShapeMesh& m) { m.mid_nodes[1][3] = m.mid_nodes[1][0]; }},
+      {"a corner as middle", [](ShapeMesh& m) { m.mid_nodes[0][0] = m.quads[0][2]; }},
+      {"two edges, one middle", [](ShapeMesh& m) { m.mid_nodes[7][2] = m.mid_nodes[0][0]; }},
+  };
+  const ShapeMesh valid = two_face_second_order_mesh();
+  ASSERT_EQ(valid.nodes.size(), 15u + 22u) << "a 2 x 4 grid of quads has 22 edges";
+  EXPECT_NO_THROW(check_shape_mesh(valid));
+  for (const auto& [what, breakage] : breakages) {
+    ShapeMesh mesh = valid;
+    breakage(mesh);
+    EXPECT_THROW(check_shape_mesh(mesh), std::invalid_argument) << what;
+    EXPECT_THROW(write_vtu_file(path("out.vtu"), mesh), std::invalid_argument) << what;
+  }
+  EXPECT_TRUE(files().empty()) << "a refused mesh left a file";
 }
 
 TEST(WriterChecksMessages, SayWhichRecord) {

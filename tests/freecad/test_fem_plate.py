@@ -192,7 +192,14 @@ class PlateWithHoleTest(unittest.TestCase):
         shape.read(PLATE_BREP)
         mesh = self._check_stress_concentration(shape, "four faces, second order",
                                                 element_order="2nd")
-        self.assertEqual(len(mesh.FemMesh.getElementNodes(1)), 8)
+        femmesh = mesh.FemMesh
+        self.assertEqual(len(femmesh.getElementNodes(1)), 8)
+        corners = {n for e in femmesh.Faces for n in femmesh.getElementNodes(e)[:4]}
+        rim = {n for n, p in femmesh.Nodes.items()
+               if abs(math.hypot(p.x - HOLE_CENTRE[0], p.y - HOLE_CENTRE[1]) - HOLE_D / 2) < 1e-9}
+        # A closed rim of n segments: n corners and, on the circle too, n middles.
+        self.assertGreater(len(rim & corners), 8)
+        self.assertEqual(len(rim - corners), len(rim & corners), "every rim middle on the circle")
 
     def _check_stress_concentration(self, shape, label, **mesh_options):
         mesh, result = self._solve(shape, **mesh_options)

@@ -143,7 +143,7 @@ def element_nodes(mesh):
     import numpy
 
     quads = numpy.asarray(mesh.quads).reshape(-1, 4)
-    mids = getattr(mesh, "mid_nodes", None)
+    mids = mesh.mid_nodes
     return quads if mids is None else numpy.hstack([quads, numpy.asarray(mids).reshape(-1, 4)])
 
 
@@ -152,9 +152,10 @@ def to_femmesh(mesh):
 
     Node i (0-based in tquad) becomes node i + 1; quad j becomes face element j + 1 with
     the same counter-clockwise node order, so the shell normals follow the CAD faces'
-    outer normals; a second-order quad has its four edge middles after its corners. The mesh goes through a temporary legacy VTK file that FemMesh.read
-    takes in one C++ call (femmesh_from_vtk_file); where that FreeCAD cannot read it
-    (built without VTK) or reads something else, node by node (femmesh_node_by_node).
+    outer normals; a second-order quad has its four edge middles after its corners.
+    The mesh goes through a temporary legacy VTK file that FemMesh.read takes in one
+    C++ call (femmesh_from_vtk_file); where that FreeCAD cannot read it (built
+    without VTK) or reads something else, node by node (femmesh_node_by_node).
     Measured by bench/freecad_transfer.py: see the README.
     """
     femmesh = femmesh_from_vtk_file(mesh)
@@ -162,15 +163,13 @@ def to_femmesh(mesh):
 
 
 def write_legacy_vtk(path: str, nodes, elements) -> None:
-    """write_legacy_vtk(): nodes (n x 3 floats) and elements (m x 4 quads or m x 8
-    quadratic quads, 0-based) as a binary legacy VTK unstructured grid (big-endian, as
-    that format asks; cell type 9 = quad, 23 = quadratic quad)."""
+    """write_legacy_vtk(): nodes (n x 3 floats) and elements (element_nodes: m x 4
+    quads or m x 8 quadratic quads, 0-based) as a binary legacy VTK unstructured grid
+    (big-endian, as that format asks; cell type 9 = quad, 23 = quadratic quad)."""
     import numpy
 
     nodes = numpy.asarray(nodes, dtype=float).reshape(-1, 3)
-    elements = numpy.asarray(elements)
-    per = elements.shape[1] if elements.ndim == 2 else 4
-    elements = elements.reshape(-1, per)
+    per = elements.shape[1]
     cells = numpy.empty((len(elements), per + 1), dtype=">i4")
     cells[:, 0] = per
     cells[:, 1:] = elements

@@ -81,7 +81,7 @@ def show_quality(vobj, on: bool) -> bool:
     """
     from .quality_colours import element_colours
 
-    values = list(getattr(vobj.Object, "ElementQuality", []) or []) or None
+    values = list(vobj.Object.ElementQuality) or None
     vobj.Proxy.quality_shown = bool(on)
     if not on or values is None or len(values) != vobj.Object.FemMesh.FaceCount:
         vobj.ElementColor = {}
