@@ -7,6 +7,7 @@
 #include <cctype>
 #include <chrono>
 #include <functional>
+#include <map>
 #include <cstdio>
 #include <filesystem>
 #include <new>
@@ -134,9 +135,13 @@ void print_summary(std::ostream& out, const MeshCommand& command, const ShapeMes
   print_jacobian_histogram(out, quality);
 }
 
-// The boundary path: one region, face 0; also drawn as SVG on request.
-ShapeMesh mesh_boundary_input(const MeshCommand& command, OutputFormat format, QualitySummary& quality) {
+// The boundary path: one region, face 0; also drawn as SVG on request. Its stages'
+// wall times go to `stage_seconds`.
+ShapeMesh mesh_boundary_input(const MeshCommand& command, OutputFormat format, QualitySummary& quality,
+                              std::map<std::string, double>& stage_seconds) {
+  const auto reading = std::chrono::steady_clock::now();
   const BoundaryLoop loop = read_boundary_json(command.input);
+  stage_seconds["read"] = seconds_since(reading);
   bool best_corners = false;
   for (const std::string& spec : command.corners) {
     if (spec != "best") {
@@ -156,9 +161,11 @@ ShapeMesh mesh_boundary_input(const MeshCommand& command, OutputFormat format, Q
     // Core messages name the point / segment / curve; add the file.
     throw InputError(command.input + ": " + e.what());
   }
-  QuadMesh& mesh = region.mesh;
+  for (const auto& [stage, seconds] : region.stage_seconds) stage_seconds[stage] += seconds;
+  const QuadMesh& mesh = region.mesh;
   if (format == OutputFormat::svg) {
     // The figure draws the template tree's cuts, which only the QuadMesh carries.
+    const auto drawing = std::chrono::steady_clock::now();
     SvgOptions svg;
     svg.columns = 1;
     svg.panel_size = 600;
@@ -168,12 +175,11 @@ ShapeMesh mesh_boundary_input(const MeshCommand& command, OutputFormat format, Q
     else if (norm(newell) > 0) svg.view_normal = newell;
     const std::string caption = std::to_string(mesh.quads.size()) + " quads: " + mesh.template_tree;
     write_svg_file(command.output, {SvgPanel{&mesh, boundary_points, caption}}, svg);
+    stage_seconds["write"] = seconds_since(drawing);
   }
+  quality = region.summary;
   // The file writers and the report take a shape's mesh: a boundary input is face 0.
-  ShapeMesh shape = single_face_mesh(std::move(mesh));
-  shape.faces[0].corner_search = region.corner_search;
-  quality = measure_mesh_quality(shape, reference);
-  return shape;
+  return boundary_shape_mesh(std::move(region));
 }
 
 // The CAD path: every (selected) face, conforming across shared edges.
@@ -262,8 +268,9 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
 
   QualitySummary quality;
   ShapeMeshResult shape_result;
-  const ShapeMesh shape = kind == InputKind::boundary ? mesh_boundary_input(command, format, quality)
-                                                      : mesh_shape_input(command, format, quality, shape_result, err);
+  const ShapeMesh shape = kind == InputKind::boundary
+                              ? mesh_boundary_input(command, format, quality, shape_result.stage_seconds)
+                              : mesh_shape_input(command, format, quality, shape_result, err);
   const auto writing = std::chrono::steady_clock::now();
   switch (format) {
     case OutputFormat::json: write_mesh_json_file(command.output, shape); break;
@@ -272,7 +279,7 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
     case OutputFormat::msh: write_msh_file(command.output, shape); break;
     case OutputFormat::svg: break;  // written with the boundary mesh
   }
-  if (kind == InputKind::shape) shape_result.stage_seconds["write"] = seconds_since(writing);
+  if (format != OutputFormat::svg) shape_result.stage_seconds["write"] = seconds_since(writing);
   const double seconds = seconds_since(start);
 
   if (quality.inverted > 0) {
@@ -291,13 +298,13 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
   }
   if (command.report_json) {
     nlohmann::ordered_json report = mesh_report_json(shape, quality);
+    report["stage_seconds"] = shape_result.stage_seconds;
     if (kind == InputKind::shape) {
       report["nodes_per_quad"] = shape.nodes_per_element();  // 4, or 8 at --order 2
       if (shape.second_order()) report["straightened_mid_nodes"] = shape_result.straightened_mid_nodes;
       report["edge_size"] = shape_result.size;
       report["refinement_rounds"] = shape_result.refinement_rounds;
       report["off_surface_quads"] = shape_result.off_surface;
-      report["stage_seconds"] = shape_result.stage_seconds;
       // Inside "mesh faces", summed over the faces (all threads): every candidate
       // route of each face before smoothing, then smoothing the chosen mesh.
       report["face_seconds"] = {{"meshing", shape_result.meshing_seconds},

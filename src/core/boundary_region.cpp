@@ -1,11 +1,13 @@
 #include "core/boundary_region.h"
 
+#include <chrono>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "core/corner_search.h"
+#include "core/elapsed.h"
 #include "core/mesh_validation.h"
-#include "core/quality.h"
 #include "core/smoothing.h"
 
 namespace tquad {
@@ -18,32 +20,73 @@ void check_mesh(const QuadMesh& mesh, int boundary_points) {
   if (!problem.empty()) throw std::logic_error("the mesh is invalid: " + problem);
 }
 
+// The region's mesh and quality as measure_mesh_quality would measure them.
+void measure(BoundaryRegionMesh& region, const std::optional<Vec3>& plane_normal) {
+  region.quality = per_quad_quality(region.mesh.nodes, region.mesh.quads, plane_normal);
+  region.summary = summarize_quality(region.quality, region.mesh.nodes, region.mesh.quads);
+}
+
 }  // namespace
 
 BoundaryRegionMesh mesh_boundary_region(const BoundaryLoop& loop, const MeshOptions& options,
                                         const std::optional<Vec3>& plane_normal, bool smooth, bool best_corners) {
   const int boundary_points = static_cast<int>(loop.points.size());
+  BoundaryRegionMesh out;
+  auto started = std::chrono::steady_clock::now();
+  const auto stage_done = [&](const std::string& stage) {
+    out.stage_seconds[stage] += seconds_since(started);
+    started = std::chrono::steady_clock::now();
+  };
   if (best_corners) {
     CornerSearchResult found = mesh_boundary_best_corners(loop, options, plane_normal, smooth);
-    check_mesh(found.mesh, boundary_points);
-    return {std::move(found.mesh), found.search};
+    out.mesh = std::move(found.mesh);
+    out.corner_search = found.search;
+    stage_done("mesh");
+    check_mesh(out.mesh, boundary_points);
+    stage_done("check");
+    measure(out, plane_normal);
+    stage_done("quality");
+    return out;
   }
-  BoundaryRegionMesh out{mesh_boundary(loop, options), std::nullopt};
-  // Checked as the templates left it; smooth_region checks what it returns.
-  check_mesh(out.mesh, boundary_points);
-  if (smooth) smooth_region(out.mesh, boundary_points, plane_normal);
-  const long long inverted = summarize_quality(out.mesh, plane_normal).inverted;
-  if (inverted > 0) {
+  out.mesh = mesh_boundary(loop, options);
+  stage_done("mesh");
+  // One check of the mesh returned. The smoother only needs valid node indices,
+  // which the templates guarantee (the corner search smooths its candidates
+  // unchecked too); smooth_region checks what it returns. Checking the templates'
+  // mesh as well cost 0.28 s of 2.4 s on a 1.5 M-quad rectangle.
+  if (smooth) {
+    smooth_region(out.mesh, boundary_points, plane_normal);
+    stage_done("smooth");
+  } else {
+    check_mesh(out.mesh, boundary_points);
+    stage_done("check");
+  }
+  measure(out, plane_normal);
+  stage_done("quality");
+  if (out.summary.inverted > 0) {
     CornerSearchResult found =
         mesh_boundary_best_corners(loop, options, plane_normal, smooth, smooth ? &out.mesh : nullptr);
-    if (summarize_quality(found.mesh, plane_normal).inverted < inverted) {
+    const QualitySummary found_summary = summarize_quality(found.mesh, plane_normal);
+    stage_done("mesh");
+    if (found_summary.inverted < out.summary.inverted) {
       check_mesh(found.mesh, boundary_points);
       out.mesh = std::move(found.mesh);
       out.corner_search = found.search;
       out.corner_search->after_inverted = true;
+      stage_done("check");
+      measure(out, plane_normal);
+      stage_done("quality");
     }
   }
   return out;
+}
+
+ShapeMesh boundary_shape_mesh(BoundaryRegionMesh&& region) {
+  ShapeMesh shape = single_face_mesh(std::move(region.mesh));
+  shape.faces[0].corner_search = region.corner_search;
+  shape.lee_lo = std::move(region.quality.lee_lo);
+  shape.scaled_jacobian = std::move(region.quality.scaled_jacobian);
+  return shape;
 }
 
 }  // namespace tquad

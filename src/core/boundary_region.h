@@ -1,7 +1,8 @@
 // mesh_boundary_region: the boundary route every front end takes (the CLI's boundary
 // files, the Python module's mesh_boundary): one region meshed with its given
-// corners, or with the best corner set when asked (corner_search.h), checked, and
-// smoothed when asked (smooth_region).
+// corners, or with the best corner set when asked (corner_search.h), smoothed when
+// asked (smooth_region), checked once (check_disk_mesh: by smooth_region when it
+// smooths), and its quality measured once, as measure_mesh_quality measures it.
 //
 // Where the given corners' mesh still has an inverted quad after that, the corner
 // search runs too and its mesh is kept if it has fewer inverted quads: a valid mesh
@@ -12,10 +13,13 @@
 // two bent sides).
 #pragma once
 
+#include <map>
 #include <optional>
+#include <string>
 
 #include "core/boundary_loop.h"
 #include "core/mesher.h"
+#include "core/quality.h"
 #include "core/shape_mesh.h"
 #include "core/vec3.h"
 
@@ -24,11 +28,20 @@ namespace tquad {
 struct BoundaryRegionMesh {
   QuadMesh mesh;
   std::optional<CornerSearch> corner_search;  // when the search ran
+  PerQuadQuality quality;                     // each quad's, signed by the plane's normal or its own
+  QualitySummary summary;                     // of `quality`
+  // Wall time of each stage: "mesh" (the templates, and the corner search when
+  // asked), "smooth" (with the check of its result), "check" (unsmoothed), "quality".
+  std::map<std::string, double> stage_seconds;
 };
 
 // `plane_normal`: the loop's plane when it is planar, else std::nullopt. Throws
 // InputError as mesh_boundary does; an invalid mesh is std::logic_error.
 BoundaryRegionMesh mesh_boundary_region(const BoundaryLoop& loop, const MeshOptions& options,
                                         const std::optional<Vec3>& plane_normal, bool smooth, bool best_corners);
+
+// The region as a shape of one face (face 0) with its per-quad quality, for the
+// writers and the report; moves the region's arrays.
+ShapeMesh boundary_shape_mesh(BoundaryRegionMesh&& region);
 
 }  // namespace tquad

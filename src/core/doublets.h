@@ -16,6 +16,10 @@
 
 namespace tquad {
 
+// Whether some node of the `nodes`, not one of [0, fixed), lies in exactly two quads.
+// Most meshes have none.
+bool has_doublet(const std::vector<Quad>& quads, int fixed, std::size_t nodes);
+
 // Nodes [0, fixed) stay. param, position and normal are per node as in smooth_mesh
 // (smoothing.h); removed nodes are dropped from them and the quads renumbered (kept
 // nodes keep their order). Returns the number of nodes removed; `refused` (if given)

@@ -29,6 +29,13 @@ struct CompressedLists {
   }
 };
 
+// The quads around each node, in quad order.
+inline CompressedLists quads_around_nodes(std::size_t nodes, const std::vector<Quad>& quads) {
+  return CompressedLists::build(nodes, [&](auto add) {
+    for (std::size_t k = 0; k < quads.size(); ++k) for (NodeId n : quads[k]) add(n, static_cast<int>(k));
+  });
+}
+
 struct NodeAdjacency {
   CompressedLists neighbours;  // edge neighbours (once each for an interior node)
   CompressedLists quads_of;    // quads around each node
@@ -39,9 +46,7 @@ struct NodeAdjacency {
     neighbours = CompressedLists::build(nodes, [&](auto add) {
       for (const Quad& q : quads) for (int i = 0; i < 4; ++i) add(q[i], q[(i + 1) % 4]);
     });
-    quads_of = CompressedLists::build(nodes, [&](auto add) {
-      for (std::size_t k = 0; k < quads.size(); ++k) for (NodeId n : quads[k]) add(n, static_cast<int>(k));
-    });
+    quads_of = quads_around_nodes(nodes, quads);
   }
 };
 

@@ -103,27 +103,103 @@ Vec3 unit(const Vec3& v) {
   return length > 0 ? (1.0 / length) * v : Vec3{};
 }
 
-class Smoother {
+// The nodes the Smoother moves, on a surface: mesh coordinates, positions and
+// normals in arrays of their own, each move placed by a PlaceNode.
+class SurfaceNodes {
  public:
-  Smoother(const std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param, std::vector<Vec3>& position,
-           std::vector<Vec3>& normal, const PlaceNode& place)
-      : quads_(quads), fixed_(fixed), param_(param), position_(position), normal_(normal), place_(place),
-        adjacency_(param.size(), quads) {
+  SurfaceNodes(std::vector<Vec3>& param, std::vector<Vec3>& position, std::vector<Vec3>& normal,
+               const PlaceNode& place)
+      : param_(param), position_(position), normal_(normal), place_(place) {
     unit_normal_.reserve(normal.size());
     for (const Vec3& v : normal) unit_normal_.push_back(unit(v));
   }
+
+  std::size_t size() const { return param_.size(); }
+  const Vec3& param(int n) const { return param_[n]; }
+  const Vec3& position(int n) const { return position_[n]; }
+  const Vec3& unit_normal(int n) const { return unit_normal_[n]; }
+  bool singular(int n) const { return norm(normal_[n]) == 0; }  // a node on a pole stays there
+
+  // What a move changes, to be put back.
+  struct State {
+    Vec3 param, position, normal, unit_normal;
+  };
+  State state(int n) const { return {param_[n], position_[n], normal_[n], unit_normal_[n]}; }
+  void restore(int n, const State& kept) {
+    param_[n] = kept.param;
+    position_[n] = kept.position;
+    normal_[n] = kept.normal;
+    unit_normal_[n] = kept.unit_normal;
+  }
+
+  // Node n put on the surface at mesh coordinates `param`; false (node unchanged)
+  // where the surface cannot take it.
+  bool place(int n, const Vec3& param) {
+    Vec3 position, normal;
+    if (!place_(n, param, position, normal) || norm(normal) == 0) return false;
+    param_[n] = param;
+    position_[n] = position;
+    normal_[n] = normal;
+    unit_normal_[n] = unit(normal);
+    return true;
+  }
+
+ private:
+  std::vector<Vec3>& param_;
+  std::vector<Vec3>& position_;
+  std::vector<Vec3>& normal_;
+  const PlaceNode& place_;
+  std::vector<Vec3> unit_normal_;  // normal_ of unit length, zero where singular
+};
+
+// The nodes of a planar mesh in its plane's frame (x, y, 0): each node's mesh
+// coordinates are its position, and the normal is +z everywhere. The same arithmetic
+// as SurfaceNodes given those (the same smoothed mesh, bit for bit) in one array
+// instead of four: on a 1.5 M-quad rectangle (counts 1000, 1100, 1200, 1300) the
+// copies cost 110 MB and a fifth of the smoothing's time, most of it the kernel
+// handing out their pages.
+class PlanarNodes {
+ public:
+  explicit PlanarNodes(std::vector<Vec3>& nodes) : nodes_(nodes) {}
+
+  std::size_t size() const { return nodes_.size(); }
+  const Vec3& param(int n) const { return nodes_[n]; }
+  const Vec3& position(int n) const { return nodes_[n]; }
+  const Vec3& unit_normal(int) const { return kUp; }
+  bool singular(int) const { return false; }
+
+  using State = Vec3;
+  State state(int n) const { return nodes_[n]; }
+  void restore(int n, const State& kept) { nodes_[n] = kept; }
+  bool place(int n, const Vec3& param) {
+    nodes_[n] = param;
+    return true;
+  }
+
+  static constexpr Vec3 kUp{0, 0, 1};
+
+ private:
+  std::vector<Vec3>& nodes_;
+};
+
+// Moves the interior nodes of `quads` held by Nodes (SurfaceNodes or PlanarNodes).
+template <typename Nodes>
+class Smoother {
+ public:
+  Smoother(const std::vector<Quad>& quads, int fixed, Nodes& nodes)
+      : quads_(quads), fixed_(fixed), nodes_(nodes), quads_of_(quads_around_nodes(nodes.size(), quads)) {}
 
   SmoothingResult run(const SmoothingOptions& options) {
     SmoothingResult result;
     // First the nodes with a corner around them under good_enough, then only nodes
     // with a neighbour that moved (or that moved themselves): most of a mesh (its
     // mapped grids) is left as the templates placed it.
-    const int count = static_cast<int>(param_.size());
+    const int count = static_cast<int>(nodes_.size());
     std::vector<char> active = nodes_deciding_corners_below(options.good_enough), next(count, 0);
     for (int pass = 0; pass < options.passes; ++pass) {
       long long moves = 0;
       for (int n = fixed_; n < count; ++n) {
-        if (!active[n] || norm(normal_[n]) == 0) continue;  // a node on a pole stays there
+        if (!active[n] || nodes_.singular(n)) continue;  // a node on a pole stays there
         // First the mean of the neighbours; then, where a corner stays poor, the
         // steepest ascent of the worst corner from wherever the Laplacian left the
         // node. With the ascent only where the Laplacian failed, the Laplacian's
@@ -152,11 +228,10 @@ class Smoother {
         if (!moved) continue;
         ++moves;
         next[n] = 1;
-        const CompressedLists& around = adjacency_.neighbours;
-        for (int k = around.offsets[n]; k < around.offsets[n + 1]; ++k) {
-          active[around.items[k]] = 1;  // later in this pass
-          next[around.items[k]] = 1;
-        }
+        for_each_neighbour(n, [&](NodeId other) {
+          active[other] = 1;  // later in this pass
+          next[other] = 1;
+        });
       }
       result.moves += moves;
       ++result.passes;
@@ -172,7 +247,7 @@ class Smoother {
   // decided by its own node and its two neighbours in the quad. One pass over the
   // quads, not one per node.
   std::vector<char> nodes_deciding_corners_below(double threshold) const {
-    std::vector<char> chosen(param_.size(), 0);
+    std::vector<char> chosen(nodes_.size(), 0);
     for (const Quad& q : quads_) {
       const QuadCorners c = corners_of(q);
       for (int j = 0; j < 4; ++j) {
@@ -186,18 +261,18 @@ class Smoother {
 
   // Quad q's corners (quality.h) at the nodes' current places and normals.
   QuadCorners corners_of(const Quad& q) const {
-    return quad_corners({position_[q[0]], position_[q[1]], position_[q[2]], position_[q[3]]},
-                        {unit_normal_[q[0]], unit_normal_[q[1]], unit_normal_[q[2]], unit_normal_[q[3]]});
+    return quad_corners({nodes_.position(q[0]), nodes_.position(q[1]), nodes_.position(q[2]), nodes_.position(q[3])},
+                        {nodes_.unit_normal(q[0]), nodes_.unit_normal(q[1]), nodes_.unit_normal(q[2]),
+                         nodes_.unit_normal(q[3])});
   }
 
   // Calls visit(corners, i) for each quad around node n, i being n's place in it,
   // always in the same order.
   template <typename Visit>
   void for_each_quad_around(int n, const Visit& visit) const {
-    const CompressedLists& around = adjacency_.quads_of;
-    for (int k = around.offsets[n]; k < around.offsets[n + 1]; ++k) {
-      const Quad& q = quads_[around.items[k]];
-      visit(corners_of(q), static_cast<int>(std::find(q.begin(), q.end(), n) - q.begin()));
+    for (int k = quads_of_.offsets[n]; k < quads_of_.offsets[n + 1]; ++k) {
+      const Quad& q = quads_[quads_of_.items[k]];
+      visit(corners_of(q), corner_of(q, n));
     }
   }
 
@@ -223,37 +298,13 @@ class Smoother {
     });
   }
 
-  // What a node's move changes, to be put back.
-  struct NodeState {
-    Vec3 param, position, normal, unit_normal;
-  };
-  NodeState state_of(int n) const { return {param_[n], position_[n], normal_[n], unit_normal_[n]}; }
-  void restore(int n, const NodeState& kept) {
-    param_[n] = kept.param;
-    position_[n] = kept.position;
-    normal_[n] = kept.normal;
-    unit_normal_[n] = kept.unit_normal;
-  }
-
-  // Node n put on the surface at mesh coordinates `param`; false (node unchanged)
-  // where the surface cannot take it.
-  bool place(int n, const Vec3& param) {
-    Vec3 position, normal;
-    if (!place_(n, param, position, normal) || norm(normal) == 0) return false;
-    param_[n] = param;
-    position_[n] = position;
-    normal_[n] = normal;
-    unit_normal_[n] = unit(normal);
-    return true;
-  }
-
   // Node n placed at `param` for a measurement, then put back. False where the
   // surface cannot take it.
   bool corner_values_at(int n, const Vec3& param, std::vector<double>& values) {
-    const NodeState kept = state_of(n);
-    if (!place(n, param)) return false;
+    const typename Nodes::State kept = nodes_.state(n);
+    if (!nodes_.place(n, param)) return false;
     corner_values(n, values);
-    restore(n, kept);
+    nodes_.restore(n, kept);
     return true;
   }
 
@@ -265,8 +316,10 @@ class Smoother {
     Vec3 first, second;
   };
   LocalFrame local_frame(int n) const {
-    const CompressedLists& next = adjacency_.neighbours;
-    Vec3 d = param_[next.items[next.offsets[n]]] - param_[n];
+    const CompressedLists& around = quads_of_;
+    if (around.offsets[n] == around.offsets[n + 1]) return {{1, 0, 0}, {0, 1, 0}};
+    const Quad& q = quads_[around.items[around.offsets[n]]];
+    Vec3 d = nodes_.param(q[(corner_of(q, n) + 1) % 4]) - nodes_.param(n);
     d.z = 0;
     d = unit(d);
     if (norm(d) == 0) d = {1, 0, 0};
@@ -277,7 +330,7 @@ class Smoother {
   // directions (gradient_first_, gradient_second_), by finite differences over h.
   // False where the surface cannot take the displaced node.
   bool corner_gradients(int n, double h, const LocalFrame& frame) {
-    const Vec3 start = param_[n];
+    const Vec3 start = nodes_.param(n);
     corner_values(n, values_);
     if (!corner_values_at(n, start + h * frame.first, gradient_first_) ||
         !corner_values_at(n, start + h * frame.second, gradient_second_) ||
@@ -323,7 +376,7 @@ class Smoother {
       if (!step) break;
       const Vec3 direction = step->first * frame.first + step->second * frame.second;
       const double smallest = std::max(shortest * kSmallestStep, step->shortest_step);
-      if (!line_search(n, param_[n], direction, step->length, smallest, best)) break;
+      if (!line_search(n, nodes_.param(n), direction, step->length, smallest, best)) break;
       moved = true;
     }
     return moved;
@@ -395,25 +448,27 @@ class Smoother {
   // Tries node n at `param`; keeps it if the corners around improve on `before`
   // (which is then updated), else restores the node.
   bool try_move(int n, const Vec3& param, LocalQuality& before) {
-    const NodeState kept = state_of(n);
-    if (!place(n, param)) return false;
+    const typename Nodes::State kept = nodes_.state(n);
+    if (!nodes_.place(n, param)) return false;
     const LocalQuality after = local_quality(n);
     if (after.improves_on(before)) {
       before = after;
       return true;
     }
-    restore(n, kept);
+    nodes_.restore(n, kept);
     return false;
   }
 
   bool move_to_neighbours_mean(int n, LocalQuality& before) {
-    const CompressedLists& next = adjacency_.neighbours;
-    const int first = next.offsets[n], last = next.offsets[n + 1];
-    if (last == first) return false;
     Vec3 mean;
-    for (int k = first; k < last; ++k) mean += param_[next.items[k]];
-    mean = (1.0 / (last - first)) * mean;
-    const Vec3 start = param_[n];
+    int count = 0;
+    for_each_neighbour(n, [&](NodeId other) {
+      mean += nodes_.param(other);
+      ++count;
+    });
+    if (count == 0) return false;
+    mean = (1.0 / count) * mean;
+    const Vec3 start = nodes_.param(n);
     for (double t : {1.0, 0.5, 0.25}) {
       if (try_move(n, start + t * (mean - start), before)) return true;
     }
@@ -429,7 +484,7 @@ class Smoother {
     for (double step = 0.25 * shortest; step > shortest / 64; step *= 0.5) {
       for (int moves = 0, improved = 1; improved && moves < kStepsPerSize; ++moves) {
         improved = 0;
-        const Vec3 start = param_[n];
+        const Vec3 start = nodes_.param(n);
         for (int d = 0; d < 8 && !improved; ++d) improved = try_move(n, start + step * kCompass[d], best);
         moved = moved || improved != 0;
       }
@@ -439,22 +494,30 @@ class Smoother {
 
   // In the mesh coordinates.
   double shortest_edge_around(int n) const {
-    const CompressedLists& next = adjacency_.neighbours;
     double shortest = INFINITY;
-    for (int k = next.offsets[n]; k < next.offsets[n + 1]; ++k) {
-      shortest = std::min(shortest, distance(param_[n], param_[next.items[k]]));
-    }
+    for_each_neighbour(n, [&](NodeId other) { shortest = std::min(shortest, distance(nodes_.param(n), nodes_.param(other))); });
     return shortest;
+  }
+
+  // Node n's place in quad q (which holds it).
+  static int corner_of(const Quad& q, NodeId n) { return static_cast<int>(std::find(q.begin(), q.end(), n) - q.begin()); }
+
+  // Calls visit(neighbour) for each edge neighbour of node n, in the same order every
+  // time: the corner after n in each quad around it, so an interior node's
+  // neighbours once each. (A list of them would cost 20 bytes a node more: 30 MB on
+  // a 1.5 M-quad rectangle.)
+  template <typename Visit>
+  void for_each_neighbour(int n, const Visit& visit) const {
+    for (int k = quads_of_.offsets[n]; k < quads_of_.offsets[n + 1]; ++k) {
+      const Quad& q = quads_[quads_of_.items[k]];
+      visit(q[(corner_of(q, n) + 1) % 4]);
+    }
   }
 
   const std::vector<Quad>& quads_;
   int fixed_;
-  std::vector<Vec3>& param_;
-  std::vector<Vec3>& position_;
-  std::vector<Vec3>& normal_;
-  const PlaceNode& place_;
-  NodeAdjacency adjacency_;
-  std::vector<Vec3> unit_normal_;  // normal_ of unit length, zero where singular
+  Nodes& nodes_;
+  CompressedLists quads_of_;  // the quads around each node
   // The ascents' buffers, kept to spare an allocation per node.
   std::vector<double> values_, gradient_first_, gradient_second_;
   std::vector<Vec3> gradients_;
@@ -485,12 +548,14 @@ namespace {
 struct SurfaceFolds {
   int inverted = 0, collapsed = 0;
 };
-SurfaceFolds folds_on_surface(const std::vector<Quad>& quads, const std::vector<Vec3>& position,
-                              const std::vector<Vec3>& normal) {
+template <typename Nodes>
+SurfaceFolds folds_on_surface(const std::vector<Quad>& quads, const Nodes& nodes) {
   SurfaceFolds folds;
   for (const Quad& q : quads) {
-    const QuadCorners c = quad_corners({position[q[0]], position[q[1]], position[q[2]], position[q[3]]},
-                                       {unit(normal[q[0]]), unit(normal[q[1]]), unit(normal[q[2]]), unit(normal[q[3]])});
+    const QuadCorners c =
+        quad_corners({nodes.position(q[0]), nodes.position(q[1]), nodes.position(q[2]), nodes.position(q[3])},
+                     {nodes.unit_normal(q[0]), nodes.unit_normal(q[1]), nodes.unit_normal(q[2]),
+                      nodes.unit_normal(q[3])});
     for (double j : c.jacobian) folds.inverted += j < -kInvertedBelow ? 1 : 0;
     folds.collapsed += c.collapsed ? 1 : 0;
   }
@@ -503,7 +568,7 @@ SurfaceFolds folds_on_surface(const std::vector<Quad>& quads, const std::vector<
 // (u, v) alone, at a cusp, is no reason to move nodes). Returns the moves kept.
 long long unfold_inverted_corners(const std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param,
                                   std::vector<Vec3>& position, std::vector<Vec3>& normal, const PlaceNode& place) {
-  const SurfaceFolds before = folds_on_surface(quads, position, normal);
+  const SurfaceFolds before = folds_on_surface(quads, SurfaceNodes(param, position, normal, place));
   const double orientation = orientation_in_coordinates(quads, param);
   if (before.inverted == 0 || orientation == 0) return 0;
   const std::vector<Vec3> kept_param = param, kept_position = position, kept_normal = normal;
@@ -516,7 +581,7 @@ long long unfold_inverted_corners(const std::vector<Quad>& quads, int fixed, std
   };
   const AreaUntanglingResult result = untangle_corner_areas(quads, fixed, param, orientation, place_node);
   if (result.moves > 0) {
-    const SurfaceFolds after = folds_on_surface(quads, position, normal);
+    const SurfaceFolds after = folds_on_surface(quads, SurfaceNodes(param, position, normal, place));
     if (after.inverted < before.inverted && after.collapsed <= before.collapsed) return result.moves;
   }
   param = kept_param;
@@ -533,7 +598,8 @@ SmoothingResult smooth_mesh(const std::vector<Quad>& quads, int fixed, std::vect
   if (fixed >= static_cast<int>(param.size())) return {};
   // Folded corners first: the smoother below cannot unfold them.
   const long long untangling_moves = unfold_inverted_corners(quads, fixed, param, position, normal, place);
-  SmoothingResult result = Smoother(quads, fixed, param, position, normal, place).run(options);
+  SurfaceNodes nodes(param, position, normal, place);
+  SmoothingResult result = Smoother<SurfaceNodes>(quads, fixed, nodes).run(options);
   result.untangling_moves = untangling_moves;
   return result;
 }
@@ -544,7 +610,15 @@ namespace {
 // cleaned (doublets.h) and smoothed; `quads` are renumbered as doublets go.
 SmoothingResult smooth_in_frame(std::vector<Quad>& quads, int fixed, std::vector<Vec3>& nodes, int& merged,
                                 const SmoothingOptions& options) {
-  const Vec3 up{0, 0, 1};
+  // Most meshes have neither doublets nor folds: smoothed in the one node array.
+  // Otherwise the general route below (with copies) merges or unfolds them first.
+  merged = 0;
+  if (fixed >= static_cast<int>(nodes.size())) return {};
+  PlanarNodes planar(nodes);
+  if (!has_doublet(quads, fixed, nodes.size()) && folds_on_surface(quads, planar).inverted == 0) {
+    return Smoother<PlanarNodes>(quads, fixed, planar).run(options);
+  }
+  const Vec3 up = PlanarNodes::kUp;
   std::vector<Vec3> param = nodes, normal(nodes.size(), up);
   merged = remove_doublets(quads, fixed, param, nodes, normal);
   const PlaceNode in_plane = [&](int, const Vec3& p, Vec3& position, Vec3& n) {

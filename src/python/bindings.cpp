@@ -149,9 +149,8 @@ py::dict mesh_boundary_binding(const py::array_t<double, py::array::c_style | py
     const MeshOptions options = template_options(t4_ratio, t5_cut_edges, max_quads);
     // The same route and final check as the CLI's.
     BoundaryRegionMesh region = mesh_boundary_region(loop, options, plane, smooth, best_corners);
-    shape = single_face_mesh(std::move(region.mesh));
-    shape.faces[0].corner_search = region.corner_search;
-    quality = measure_mesh_quality(shape, planar ? std::optional<Vec3>(normal) : std::nullopt);
+    quality = region.summary;
+    shape = boundary_shape_mesh(std::move(region));
   }
   py::dict out = mesh_dict(shape, quality);
   return out;

@@ -118,6 +118,28 @@ TEST_F(Success, ReportJsonHasEveryField) {
   EXPECT_TRUE(report["refused_faces"].empty());
 }
 
+TEST_F(Success, ReportTimesEveryStageOfTheBoundaryRoute) {
+  // Smoothed (the default) the check is part of "smooth"; unsmoothed it is a stage.
+  std::vector<int> corners;
+  const std::string input = boundary_file("plate.json", plate(corners), corners);
+  const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> routes = {
+      {{}, {"read", "mesh", "smooth", "quality", "write"}},
+      {{"--no-smooth"}, {"read", "mesh", "check", "quality", "write"}}};
+  for (const auto& [extra, stages] : routes) {
+    std::vector<std::string> args = {"mesh", input, "-o", path("plate.vtu"), "--report", "json"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const RunResult r = run_tquad(args);
+    ASSERT_EQ(r.exit_status, 0) << r.err;
+    const json report = json::parse(r.out);
+    ASSERT_TRUE(report["stage_seconds"].is_object()) << r.out;
+    EXPECT_EQ(report["stage_seconds"].size(), stages.size()) << report["stage_seconds"].dump();
+    for (const std::string& stage : stages) {
+      ASSERT_TRUE(report["stage_seconds"].contains(stage)) << stage << " in " << report["stage_seconds"].dump();
+      EXPECT_GE(report["stage_seconds"][stage].get<double>(), 0.0) << stage;
+    }
+  }
+}
+
 // Reads the appended raw binary of our .vtu: per DataArray a UInt64 byte count and
 // the bytes, in the order of the tags.
 TEST_F(Success, VtuOutputIsAValidAppendedBinaryUnstructuredGrid) {
