@@ -7,6 +7,10 @@
 #include <iostream>
 #include <string>
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 #include <CLI/CLI.hpp>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
@@ -143,6 +147,14 @@ int main(int argc, char** argv) {
   // leave the temporary output behind; ignored, the write fails like on a full disk
   // and the writer removes it (atomic_file_writer.h).
   std::signal(SIGXFSZ, SIG_IGN);
+#ifdef __GLIBC__
+  // Arrays up to 32 MB freed and allocated again (a million-quad mesh's checks,
+  // smoothing lists, quality arrays) stay in the heap instead of going back to the
+  // kernel, which hands out fresh pages slowly: the 1.5 M-quad rectangle (counts
+  // 1000, 1100, 1200, 1300) took 1.30 instead of 1.48 s, at the same peak memory.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, INT_MAX);
+#endif
   try {
     return run_cli(argc, argv);
   } catch (const std::exception& e) {

@@ -639,20 +639,21 @@ SmoothingResult smooth_mesh_in_plane(QuadMesh& mesh, int fixed, const Vec3& norm
                                      const SmoothingOptions& options) {
   merged = 0;
   if (fixed <= 0 || fixed >= static_cast<int>(mesh.nodes.size())) return {};
-  // A right-handed frame (e1, e2, normal) at the first boundary node. Only the
-  // nodes are copied into it (the quads are renumbered in place; see has_doublet in
-  // doublets.cpp for what the copy cost).
+  // A right-handed frame (e1, e2, normal) at the first boundary node; the nodes are
+  // taken into it in place (a copy cost 36 MB and 0.1 s of a 1.5 M-quad rectangle,
+  // most of it the kernel handing out its pages) and the boundary's saved apart.
   const MeanPlane plane = MeanPlane::with_normal(mesh.nodes[0], normal);
-  std::vector<Vec3> local;
-  local.reserve(mesh.nodes.size());
-  for (const Vec3& p : mesh.nodes) {
+  const std::vector<Vec3> boundary(mesh.nodes.begin(), mesh.nodes.begin() + fixed);
+  for (Vec3& p : mesh.nodes) {
     const Vec3 in_plane = plane.local(p);
-    local.push_back({in_plane.x, in_plane.y, 0});
+    p = {in_plane.x, in_plane.y, 0};
   }
-  const SmoothingResult result = smooth_in_frame(mesh.quads, fixed, local, merged, options);
+  const SmoothingResult result = smooth_in_frame(mesh.quads, fixed, mesh.nodes, merged, options);
   // The boundary nodes keep their coordinates bit for bit; the others come back.
-  mesh.nodes.resize(local.size());
-  for (std::size_t i = fixed; i < local.size(); ++i) mesh.nodes[i] = plane.point_at(local[i].x, local[i].y, 0);
+  std::copy(boundary.begin(), boundary.end(), mesh.nodes.begin());
+  for (std::size_t i = fixed; i < mesh.nodes.size(); ++i) {
+    mesh.nodes[i] = plane.point_at(mesh.nodes[i].x, mesh.nodes[i].y, 0);
+  }
   return result;
 }
 
