@@ -182,6 +182,37 @@ class PlanarNodes {
   std::vector<Vec3>& nodes_;
 };
 
+// Quad q's corners (quality.h) at its nodes' current places and normals.
+template <typename Nodes>
+QuadCorners corners_of(const Quad& q, const Nodes& nodes) {
+  return quad_corners({nodes.position(q[0]), nodes.position(q[1]), nodes.position(q[2]), nodes.position(q[3])},
+                      {nodes.unit_normal(q[0]), nodes.unit_normal(q[1]), nodes.unit_normal(q[2]),
+                       nodes.unit_normal(q[3])});
+}
+
+// One pass over every quad's corners: the nodes, not among the `fixed` first, that
+// decide a corner under `threshold` as the smoother judges corners (a corner's angle
+// is decided by its own node and its two neighbours in the quad), and the corners
+// inverted against the surface normals (as folds_on_surface counts them).
+struct CornerScan {
+  std::vector<char> deciding;
+  long long inverted = 0;
+};
+template <typename Nodes>
+CornerScan scan_corners(const std::vector<Quad>& quads, int fixed, const Nodes& nodes, double threshold) {
+  CornerScan scan{std::vector<char>(nodes.size(), 0), 0};
+  for (const Quad& q : quads) {
+    const QuadCorners c = corners_of(q, nodes);
+    for (int j = 0; j < 4; ++j) {
+      scan.inverted += c.jacobian[j] < -kInvertedBelow ? 1 : 0;
+      if (!(judged_corner(c, j) < threshold)) continue;
+      for (int k : decided_by(j)) scan.deciding[q[k]] = 1;  // the nodes deciding corner j
+    }
+  }
+  std::fill(scan.deciding.begin(), scan.deciding.begin() + std::min<std::size_t>(fixed, nodes.size()), 0);
+  return scan;
+}
+
 // Moves the interior nodes of `quads` held by Nodes (SurfaceNodes or PlanarNodes).
 template <typename Nodes>
 class Smoother {
@@ -190,12 +221,16 @@ class Smoother {
       : quads_(quads), fixed_(fixed), nodes_(nodes), quads_of_(quads_around_nodes(nodes.size(), quads)) {}
 
   SmoothingResult run(const SmoothingOptions& options) {
+    return run(options, scan_corners(quads_, fixed_, nodes_, options.good_enough).deciding);
+  }
+
+  // `active`: the nodes deciding a corner under good_enough (scan_corners), moved
+  // first; then only nodes with a neighbour that moved (or that moved themselves):
+  // most of a mesh (its mapped grids) is left as the templates placed it.
+  SmoothingResult run(const SmoothingOptions& options, std::vector<char> active) {
     SmoothingResult result;
-    // First the nodes with a corner around them under good_enough, then only nodes
-    // with a neighbour that moved (or that moved themselves): most of a mesh (its
-    // mapped grids) is left as the templates placed it.
     const int count = static_cast<int>(nodes_.size());
-    std::vector<char> active = nodes_deciding_corners_below(options.good_enough), next(count, 0);
+    std::vector<char> next(count, 0);
     for (int pass = 0; pass < options.passes; ++pass) {
       long long moves = 0;
       for (int n = fixed_; n < count; ++n) {
@@ -243,28 +278,6 @@ class Smoother {
   }
 
  private:
-  // Nodes (not fixed) that decide some corner under `threshold`: a corner's angle is
-  // decided by its own node and its two neighbours in the quad. One pass over the
-  // quads, not one per node.
-  std::vector<char> nodes_deciding_corners_below(double threshold) const {
-    std::vector<char> chosen(nodes_.size(), 0);
-    for (const Quad& q : quads_) {
-      const QuadCorners c = corners_of(q);
-      for (int j = 0; j < 4; ++j) {
-        if (!(judged_corner(c, j) < threshold)) continue;
-        for (int k : decided_by(j)) chosen[q[k]] = 1;  // the nodes deciding corner j
-      }
-    }
-    std::fill(chosen.begin(), chosen.begin() + std::min<std::size_t>(fixed_, chosen.size()), 0);
-    return chosen;
-  }
-
-  // Quad q's corners (quality.h) at the nodes' current places and normals.
-  QuadCorners corners_of(const Quad& q) const {
-    return quad_corners({nodes_.position(q[0]), nodes_.position(q[1]), nodes_.position(q[2]), nodes_.position(q[3])},
-                        {nodes_.unit_normal(q[0]), nodes_.unit_normal(q[1]), nodes_.unit_normal(q[2]),
-                         nodes_.unit_normal(q[3])});
-  }
 
   // Calls visit(corners, i) for each quad around node n, i being n's place in it,
   // always in the same order.
@@ -272,7 +285,7 @@ class Smoother {
   void for_each_quad_around(int n, const Visit& visit) const {
     for (int k = quads_of_.offsets[n]; k < quads_of_.offsets[n + 1]; ++k) {
       const Quad& q = quads_[quads_of_.items[k]];
-      visit(corners_of(q), corner_of(q, n));
+      visit(corners_of(q, nodes_), corner_of(q, n));
     }
   }
 
@@ -552,10 +565,7 @@ template <typename Nodes>
 SurfaceFolds folds_on_surface(const std::vector<Quad>& quads, const Nodes& nodes) {
   SurfaceFolds folds;
   for (const Quad& q : quads) {
-    const QuadCorners c =
-        quad_corners({nodes.position(q[0]), nodes.position(q[1]), nodes.position(q[2]), nodes.position(q[3])},
-                     {nodes.unit_normal(q[0]), nodes.unit_normal(q[1]), nodes.unit_normal(q[2]),
-                      nodes.unit_normal(q[3])});
+    const QuadCorners c = corners_of(q, nodes);
     for (double j : c.jacobian) folds.inverted += j < -kInvertedBelow ? 1 : 0;
     folds.collapsed += c.collapsed ? 1 : 0;
   }
@@ -615,8 +625,9 @@ SmoothingResult smooth_in_frame(std::vector<Quad>& quads, int fixed, std::vector
   merged = 0;
   if (fixed >= static_cast<int>(nodes.size())) return {};
   PlanarNodes planar(nodes);
-  if (!has_doublet(quads, fixed, nodes.size()) && folds_on_surface(quads, planar).inverted == 0) {
-    return Smoother<PlanarNodes>(quads, fixed, planar).run(options);
+  if (!has_doublet(quads, fixed, nodes.size())) {
+    CornerScan scan = scan_corners(quads, fixed, planar, options.good_enough);
+    if (scan.inverted == 0) return Smoother<PlanarNodes>(quads, fixed, planar).run(options, std::move(scan.deciding));
   }
   const Vec3 up = PlanarNodes::kUp;
   std::vector<Vec3> param = nodes, normal(nodes.size(), up);
