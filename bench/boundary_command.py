@@ -97,8 +97,9 @@ def main():
             best[label] = seconds
             print(f"{label:20s} {seconds:6.2f} s  peak {peak / 2**20:7.1f} MiB = {peak / quads:5.1f} bytes per quad")
             stages = json.loads(subprocess.run([args.tquad, "mesh", boundary, "-o", output, "--report", "json"] + extra,
-                                               capture_output=True, text=True, check=True).stdout)["stage_seconds"]
-            print(" " * 21 + ", ".join(f"{stage} {t:.2f}" for stage, t in stages.items()) + " s (one more run)")
+                                               capture_output=True, text=True, check=True).stdout).get("stage_seconds")
+            if stages:  # (builds before 2026-12-03 did not time the boundary route's stages)
+                print(" " * 21 + ", ".join(f"{stage} {t:.2f}" for stage, t in stages.items()) + " s (one more run)")
         if args.smesh:
             compute = smesh_compute_seconds(args.smesh, counts, folder, args.repeat)
             print(f"SMESH compute()      {compute:6.2f} s  (least of {args.repeat}): "
