@@ -19,8 +19,10 @@ CurveGeometry::CurveGeometry(const std::vector<NodeId>& ids, const std::vector<V
 }
 
 Vec3 CurveGeometry::at(double t) const {
-  if (t <= 0.0) return points_.front();
-  if (t >= 1.0) return points_.back();
+  // Written so that a NaN t (from a degenerate patch map) gives the first point
+  // rather than an index past the end (fuzz_boundary found one, 2026-12-03).
+  if (!(t > 0.0)) return points_.front();
+  if (!(t < 1.0)) return points_.back();
   const auto it = std::upper_bound(params_.begin(), params_.end(), t);
   const std::size_t hi = static_cast<std::size_t>(it - params_.begin());
   const std::size_t lo = hi - 1;
