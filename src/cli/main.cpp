@@ -148,8 +148,8 @@ int run_cli(int argc, char** argv) {
 // madvise, as Debian does) and that is never given back. A million-quad mesh's
 // arrays are otherwise fresh 4 KB pages each time, and on a virtual machine each
 // first touch is a trap: the 1.5 M-quad rectangle (counts 1000, 1100, 1200, 1300)
-// took 25,000 page faults and 1.23 s, with this 1,600 and 0.8 s, at the same peak
-// memory. The heap is grown once by kHeapReserve, untouched (no memory used until
+// took 25,000 page faults and 1.23 s, with this about 1,300 and 0.85 s, at a peak
+// 4 MB higher (119 to 123 MB). The heap is grown once by kHeapReserve, untouched (no memory used until
 // written), and advised; past it, it grows in 4 KB pages as before.
 // Not under AddressSanitizer (its allocator is its own, and the reserve would cost its
 // shadow memory), nor where the system commits memory strictly (the reserve would

@@ -20,10 +20,20 @@ void check_mesh(const QuadMesh& mesh, int boundary_points) {
   if (!problem.empty()) throw std::logic_error("the mesh is invalid: " + problem);
 }
 
-// The region's mesh and quality as measure_mesh_quality would measure them.
-void measure(BoundaryRegionMesh& region, const std::optional<Vec3>& plane_normal) {
-  region.quality = per_quad_quality(region.mesh.nodes, region.mesh.quads, plane_normal);
-  region.summary = summarize_quality(region.quality, region.mesh.nodes, region.mesh.quads);
+// A mesh's quality as measure_mesh_quality would measure it: per quad, and summed up.
+struct MeasuredQuality {
+  PerQuadQuality per_quad;
+  QualitySummary summary;
+};
+MeasuredQuality measure(const QuadMesh& mesh, const std::optional<Vec3>& plane_normal) {
+  MeasuredQuality out{per_quad_quality(mesh.nodes, mesh.quads, plane_normal), {}};
+  out.summary = summarize_quality(out.per_quad, mesh.nodes, mesh.quads);
+  return out;
+}
+
+void keep_quality(BoundaryRegionMesh& region, MeasuredQuality measured) {
+  region.quality = std::move(measured.per_quad);
+  region.summary = measured.summary;
 }
 
 }  // namespace
@@ -44,7 +54,7 @@ BoundaryRegionMesh mesh_boundary_region(const BoundaryLoop& loop, const MeshOpti
     stage_done("mesh");
     check_mesh(out.mesh, boundary_points);
     stage_done("check");
-    measure(out, plane_normal);
+    keep_quality(out, measure(out.mesh, plane_normal));
     stage_done("quality");
     return out;
   }
@@ -61,21 +71,20 @@ BoundaryRegionMesh mesh_boundary_region(const BoundaryLoop& loop, const MeshOpti
     check_mesh(out.mesh, boundary_points);
     stage_done("check");
   }
-  measure(out, plane_normal);
+  keep_quality(out, measure(out.mesh, plane_normal));
   stage_done("quality");
   if (out.summary.inverted > 0) {
     CornerSearchResult found =
         mesh_boundary_best_corners(loop, options, plane_normal, smooth, smooth ? &out.mesh : nullptr);
-    const QualitySummary found_summary = summarize_quality(found.mesh, plane_normal);
+    MeasuredQuality found_quality = measure(found.mesh, plane_normal);
     stage_done("mesh");
-    if (found_summary.inverted < out.summary.inverted) {
+    if (found_quality.summary.inverted < out.summary.inverted) {
       check_mesh(found.mesh, boundary_points);
       out.mesh = std::move(found.mesh);
       out.corner_search = found.search;
       out.corner_search->after_inverted = true;
+      keep_quality(out, std::move(found_quality));
       stage_done("check");
-      measure(out, plane_normal);
-      stage_done("quality");
     }
   }
   return out;

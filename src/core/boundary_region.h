@@ -1,8 +1,9 @@
 // mesh_boundary_region: the boundary route every front end takes (the CLI's boundary
 // files, the Python module's mesh_boundary): one region meshed with its given
 // corners, or with the best corner set when asked (corner_search.h), smoothed when
-// asked (smooth_region), checked once (check_disk_mesh: by smooth_region when it
-// smooths), and its quality measured once, as measure_mesh_quality measures it.
+// asked (smooth_region), checked (check_disk_mesh: once on the default route, by
+// smooth_region when it smooths; the corner search's result again), and its quality
+// measured once, as measure_mesh_quality measures it.
 //
 // Where the given corners' mesh still has an inverted quad after that, the corner
 // search runs too and its mesh is kept if it has fewer inverted quads: a valid mesh
@@ -30,8 +31,9 @@ struct BoundaryRegionMesh {
   std::optional<CornerSearch> corner_search;  // when the search ran
   PerQuadQuality quality;                     // each quad's, signed by the plane's normal or its own
   QualitySummary summary;                     // of `quality`
-  // Wall time of each stage: "mesh" (the templates, and the corner search when
-  // asked), "smooth" (with the check of its result), "check" (unsmoothed), "quality".
+  // Wall time of each stage: "mesh" (the templates; the corner search, with its
+  // smoothing, when it runs), "smooth" (with the check of its result), "check" (of
+  // an unsmoothed mesh, or of the corner search's), "quality".
   std::map<std::string, double> stage_seconds;
 };
 

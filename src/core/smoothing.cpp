@@ -190,10 +190,29 @@ QuadCorners corners_of(const Quad& q, const Nodes& nodes) {
                        nodes.unit_normal(q[3])});
 }
 
+// Positions and normals (any length) read where they are, each unit normal computed
+// as a corner needs it: what the fold count before and after the untangling reads,
+// without the copy of every normal that SurfaceNodes makes for the smoother.
+struct NormalsInPlace {
+  const std::vector<Vec3>& positions;
+  const std::vector<Vec3>& normals;
+  const Vec3& position(int n) const { return positions[n]; }
+  Vec3 unit_normal(int n) const { return unit(normals[n]); }
+};
+
+// The corners of a quad inverted where the user sees them: a scaled Jacobian against
+// the surface normals (each quad's own where the normal is singular) below
+// -kInvertedBelow.
+int inverted_corners(const QuadCorners& c) {
+  int inverted = 0;
+  for (double j : c.jacobian) inverted += j < -kInvertedBelow ? 1 : 0;
+  return inverted;
+}
+
 // One pass over every quad's corners: the nodes, not among the `fixed` first, that
 // decide a corner under `threshold` as the smoother judges corners (a corner's angle
 // is decided by its own node and its two neighbours in the quad), and the corners
-// inverted against the surface normals (as folds_on_surface counts them).
+// inverted (inverted_corners).
 struct CornerScan {
   std::vector<char> deciding;
   long long inverted = 0;
@@ -203,8 +222,8 @@ CornerScan scan_corners(const std::vector<Quad>& quads, int fixed, const Nodes& 
   CornerScan scan{std::vector<char>(nodes.size(), 0), 0};
   for (const Quad& q : quads) {
     const QuadCorners c = corners_of(q, nodes);
+    scan.inverted += inverted_corners(c);
     for (int j = 0; j < 4; ++j) {
-      scan.inverted += c.jacobian[j] < -kInvertedBelow ? 1 : 0;
       if (!(judged_corner(c, j) < threshold)) continue;
       for (int k : decided_by(j)) scan.deciding[q[k]] = 1;  // the nodes deciding corner j
     }
@@ -508,12 +527,16 @@ class Smoother {
   // In the mesh coordinates.
   double shortest_edge_around(int n) const {
     double shortest = INFINITY;
-    for_each_neighbour(n, [&](NodeId other) { shortest = std::min(shortest, distance(nodes_.param(n), nodes_.param(other))); });
+    for_each_neighbour(n, [&](NodeId other) {
+      shortest = std::min(shortest, distance(nodes_.param(n), nodes_.param(other)));
+    });
     return shortest;
   }
 
   // Node n's place in quad q (which holds it).
-  static int corner_of(const Quad& q, NodeId n) { return static_cast<int>(std::find(q.begin(), q.end(), n) - q.begin()); }
+  static int corner_of(const Quad& q, NodeId n) {
+    return static_cast<int>(std::find(q.begin(), q.end(), n) - q.begin());
+  }
 
   // Calls visit(neighbour) for each edge neighbour of node n, in the same order every
   // time: the corner after n in each quad around it, so an interior node's
@@ -555,18 +578,18 @@ double orientation_in_coordinates(const std::vector<Quad>& quads, const std::vec
 
 namespace {
 
-// Corners whose scaled Jacobian against the surface normals (each quad's own where
-// the normal is singular) is below -kInvertedBelow: inverted where the user sees them.
-// And quads with an edge under kCollapsedEdgeRatio of their longest.
+// Inverted corners (inverted_corners), and quads with an edge under
+// kCollapsedEdgeRatio of their longest.
 struct SurfaceFolds {
   int inverted = 0, collapsed = 0;
 };
-template <typename Nodes>
-SurfaceFolds folds_on_surface(const std::vector<Quad>& quads, const Nodes& nodes) {
+SurfaceFolds folds_on_surface(const std::vector<Quad>& quads, const std::vector<Vec3>& position,
+                              const std::vector<Vec3>& normal) {
   SurfaceFolds folds;
+  const NormalsInPlace nodes{position, normal};
   for (const Quad& q : quads) {
     const QuadCorners c = corners_of(q, nodes);
-    for (double j : c.jacobian) folds.inverted += j < -kInvertedBelow ? 1 : 0;
+    folds.inverted += inverted_corners(c);
     folds.collapsed += c.collapsed ? 1 : 0;
   }
   return folds;
@@ -578,7 +601,7 @@ SurfaceFolds folds_on_surface(const std::vector<Quad>& quads, const Nodes& nodes
 // (u, v) alone, at a cusp, is no reason to move nodes). Returns the moves kept.
 long long unfold_inverted_corners(const std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param,
                                   std::vector<Vec3>& position, std::vector<Vec3>& normal, const PlaceNode& place) {
-  const SurfaceFolds before = folds_on_surface(quads, SurfaceNodes(param, position, normal, place));
+  const SurfaceFolds before = folds_on_surface(quads, position, normal);
   const double orientation = orientation_in_coordinates(quads, param);
   if (before.inverted == 0 || orientation == 0) return 0;
   const std::vector<Vec3> kept_param = param, kept_position = position, kept_normal = normal;
@@ -591,7 +614,7 @@ long long unfold_inverted_corners(const std::vector<Quad>& quads, int fixed, std
   };
   const AreaUntanglingResult result = untangle_corner_areas(quads, fixed, param, orientation, place_node);
   if (result.moves > 0) {
-    const SurfaceFolds after = folds_on_surface(quads, SurfaceNodes(param, position, normal, place));
+    const SurfaceFolds after = folds_on_surface(quads, position, normal);
     if (after.inverted < before.inverted && after.collapsed <= before.collapsed) return result.moves;
   }
   param = kept_param;
