@@ -17,8 +17,6 @@
 #endif
 
 #include <CLI/CLI.hpp>
-#include <Message.hxx>
-#include <Message_Messenger.hxx>
 
 #include "cli/mesh_command.h"
 #include "occ/isolated_reader.h"
@@ -180,9 +178,6 @@ void use_huge_page_heap() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // tquad reports problems itself, one line each; OpenCASCADE's readers would print
-  // their own diagnostics on stdout, which --report json keeps for the report.
-  Message::DefaultMessenger()->ChangePrinters().Clear();
   // Over a file-size limit (ulimit -f) a write would kill the process by SIGXFSZ and
   // leave the temporary output behind; ignored, the write fails like on a full disk
   // and the writer removes it (atomic_file_writer.h).

@@ -1,8 +1,5 @@
 #include "cli/mesh_command.h"
 
-#include <TopExp.hxx>
-#include <TopTools_IndexedMapOfShape.hxx>
-
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -31,8 +28,8 @@
 #include "io/report_json.h"
 #include "io/svg_writer.h"
 #include "io/vtu_writer.h"
-#include "cli/shape_arguments.h"
-#include "occ/shape_reader.h"
+#include "cli/cad_input.h"
+#include "occ/shape_formats.h"
 
 namespace tquad {
 
@@ -182,71 +179,6 @@ ShapeMesh mesh_boundary_input(const MeshCommand& command, OutputFormat format, Q
   return boundary_shape_mesh(std::move(region));
 }
 
-// The CAD path: every (selected) face, conforming across shared edges.
-
-// --progress: one line per stage on `err`, and the faces meshed in tenths.
-std::function<void(const MeshProgress&)> progress_printer(std::ostream& err) {
-  return [&err, last_tenth = -1](const MeshProgress& p) mutable {
-    if (p.stage != "mesh faces" || p.total <= 1) {
-      if (p.done == 0) err << "tquad: " << p.stage << "\n";
-      last_tenth = -1;
-      return;
-    }
-    const int tenth = 10 * p.done / p.total;
-    if (tenth == last_tenth) return;
-    last_tenth = tenth;
-    err << "tquad: mesh faces " << p.done << " of " << p.total << "\n";
-  };
-}
-
-ShapeMesh mesh_shape_input(const MeshCommand& command, OutputFormat format, QualitySummary& quality,
-                           ShapeMeshResult& result, std::ostream& err) {
-  if (format == OutputFormat::svg) {
-    throw InputError(command.output + ": SVG output draws boundary regions only; use .vtu, .inp, .msh or .json");
-  }
-  ShapeMeshOptions options = command.shape;
-  options.templates = command.options;
-  if (command.progress) options.progress = progress_printer(err);
-  std::vector<std::string> corner_specs;
-  for (const std::string& spec : command.corners) {
-    if (spec == "best") {
-      options.best_corners = true;
-    } else {
-      corner_specs.push_back(spec);
-    }
-  }
-  options.corners = parse_corner_specs(corner_specs);
-  const auto reading = std::chrono::steady_clock::now();
-  const ReadShape read = read_shape_isolated(command.input, command.read);
-  const double read_seconds = seconds_since(reading);
-  const TopoDS_Shape& shape = read.shape;
-  if (!command.faces.empty()) {
-    TopTools_IndexedMapOfShape faces;
-    TopExp::MapShapes(shape, TopAbs_FACE, faces);
-    try {
-      options.faces = parse_face_list(command.faces, faces.Extent());
-    } catch (const InputError& e) {
-      throw InputError(command.input + ": " + e.what());
-    }
-  }
-  for (int f : read.invalid_faces) options.damaged_faces[f] = kInvalidFaceReason;
-  try {
-    result = mesh_shape(shape, options);
-  } catch (const FacesRefusedError& e) {
-    throw InputError(command.input + ": " + e.what() + " (--keep-going meshes the other faces)");
-  } catch (const InputError& e) {
-    throw InputError(command.input + ": " + e.what());
-  }
-  // The reader's child process (file, shape check, transfer back) as a stage of its own.
-  result.stage_seconds["read"] = read_seconds;
-  // Lee-Lo is signed by each quad's own normal; the scaled Jacobian is the occ
-  // layer's, each corner against the face's outer normal at that corner.
-  const auto measuring = std::chrono::steady_clock::now();
-  quality = measure_mesh_quality(result.mesh, std::nullopt);
-  result.stage_seconds["quality"] = seconds_since(measuring);
-  return std::move(result.mesh);
-}
-
 int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
   const InputKind kind = input_kind(command.input);
   const OutputFormat format = output_format(command.output);  // before the work
@@ -268,9 +200,19 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
 
   QualitySummary quality;
   ShapeMeshResult shape_result;
-  const ShapeMesh shape = kind == InputKind::boundary
-                              ? mesh_boundary_input(command, format, quality, shape_result.stage_seconds)
-                              : mesh_shape_input(command, format, quality, shape_result, err);
+  ShapeMesh shape;
+  if (kind == InputKind::boundary) {
+    shape = mesh_boundary_input(command, format, quality, shape_result.stage_seconds);
+  } else {
+    if (format == OutputFormat::svg) {
+      throw InputError(command.output + ": SVG output draws boundary regions only; use .vtu, .inp, .msh or .json");
+    }
+    // Every (selected) face, conforming across shared edges (cad_input.h).
+    CadInputMesh cad = mesh_cad_input(command, err);
+    shape = std::move(cad.mesh);
+    quality = cad.quality;
+    shape_result = std::move(cad.result);
+  }
   const auto writing = std::chrono::steady_clock::now();
   switch (format) {
     case OutputFormat::json: write_mesh_json_file(command.output, shape); break;

@@ -214,21 +214,21 @@ int inverted_corners(const QuadCorners& c) {
 // is decided by its own node and its two neighbours in the quad), and the corners
 // inverted (inverted_corners).
 struct CornerScan {
-  std::vector<char> deciding;
+  std::vector<bool> deciding;  // bits: a byte a node was 1.5 MB of the 1.5 M-quad rectangle's peak
   long long inverted = 0;
 };
 template <typename Nodes>
 CornerScan scan_corners(const std::vector<Quad>& quads, int fixed, const Nodes& nodes, double threshold) {
-  CornerScan scan{std::vector<char>(nodes.size(), 0), 0};
+  CornerScan scan{std::vector<bool>(nodes.size(), false), 0};
   for (const Quad& q : quads) {
     const QuadCorners c = corners_of(q, nodes);
     scan.inverted += inverted_corners(c);
     for (int j = 0; j < 4; ++j) {
       if (!(judged_corner(c, j) < threshold)) continue;
-      for (int k : decided_by(j)) scan.deciding[q[k]] = 1;  // the nodes deciding corner j
+      for (int k : decided_by(j)) scan.deciding[q[k]] = true;  // the nodes deciding corner j
     }
   }
-  std::fill(scan.deciding.begin(), scan.deciding.begin() + std::min<std::size_t>(fixed, nodes.size()), 0);
+  std::fill(scan.deciding.begin(), scan.deciding.begin() + std::min<std::size_t>(fixed, nodes.size()), false);
   return scan;
 }
 
@@ -246,10 +246,10 @@ class Smoother {
   // `active`: the nodes deciding a corner under good_enough (scan_corners), moved
   // first; then only nodes with a neighbour that moved (or that moved themselves):
   // most of a mesh (its mapped grids) is left as the templates placed it.
-  SmoothingResult run(const SmoothingOptions& options, std::vector<char> active) {
+  SmoothingResult run(const SmoothingOptions& options, std::vector<bool> active) {
     SmoothingResult result;
     const int count = static_cast<int>(nodes_.size());
-    std::vector<char> next(count, 0);
+    std::vector<bool> next(count, false);
     for (int pass = 0; pass < options.passes; ++pass) {
       long long moves = 0;
       for (int n = fixed_; n < count; ++n) {
@@ -281,17 +281,17 @@ class Smoother {
         if (here.worst < 0 || here.collapsed > 0) moved = compass_search(n, here) || moved;
         if (!moved) continue;
         ++moves;
-        next[n] = 1;
+        next[n] = true;
         for_each_neighbour(n, [&](NodeId other) {
-          active[other] = 1;  // later in this pass
-          next[other] = 1;
+          active[other] = true;  // later in this pass
+          next[other] = true;
         });
       }
       result.moves += moves;
       ++result.passes;
       if (moves == 0) break;
       active.swap(next);
-      std::fill(next.begin(), next.end(), 0);
+      std::fill(next.begin(), next.end(), false);
     }
     return result;
   }

@@ -21,6 +21,8 @@
 #include <sstream>
 
 #include "core/input_error.h"
+#include "occ/exchange_reader.h"
+#include "occ/shape_formats.h"
 #include "occ/shape_reader.h"
 
 namespace tquad {
@@ -51,7 +53,8 @@ bool write_all(int fd, const std::string& bytes) {
   return true;
 }
 
-// The child: reads, and writes 'S' + binary BREP or 'E' + message to fd; never returns.
+// The child: reads, and writes 'S' + binary BREP, or 'E' + message (the input's fault),
+// 'F' + message (the program's), 'M' (memory) or 'C' (a crash caught) to fd; never returns.
 [[noreturn]] void run_reader(int fd, const std::function<TopoDS_Shape()>& read, const ReadLimits& limits) {
   // A crash here is only this child's death, reported by the parent: the handlers
   // the caller installed (FreeCAD's turn SIGSEGV into a C++ exception; a fuzzer's
@@ -87,6 +90,8 @@ bool write_all(int fd, const std::string& bytes) {
     message = std::string("E") + e.what();
   } catch (const std::bad_alloc&) {
     message = "M";
+  } catch (const ExchangeReadersUnavailable& e) {
+    message = std::string("F") + e.what();
   } catch (...) {
     message = "C";
   }
@@ -147,6 +152,7 @@ ReadShape read_in_child(const std::function<TopoDS_Shape()>& read, const std::st
     case 'E': throw InputError(payload.substr(1));
     case 'M': throw InputError(what + ": reading it needs more than the memory limit (a damaged file?)");
     case 'C': throw InputError(what + " is damaged: OpenCASCADE could not read it");
+    case 'F': throw std::runtime_error(payload.substr(1));  // not the file's fault
     case 'S': break;
     default: throw std::logic_error("unexpected reply from the reader process");
   }

@@ -2,9 +2,6 @@
 
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
-#include <IFSelect_ReturnStatus.hxx>
-#include <IGESControl_Reader.hxx>
-#include <STEPControl_Reader.hxx>
 #include <TopExp_Explorer.hxx>
 
 #include <algorithm>
@@ -19,18 +16,11 @@
 #include <vector>
 
 #include "core/input_error.h"
+#include "occ/exchange_reader.h"
 
 namespace tquad {
 
 namespace {
-
-std::string extension_of(const std::string& path) {
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string::npos) return "";
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
 
 void require_faces(const TopoDS_Shape& shape, const std::string& what) {
   if (shape.IsNull() || !TopExp_Explorer(shape, TopAbs_FACE).More()) {
@@ -57,30 +47,13 @@ std::string last_line(const std::string& path) {
 // A STEP file ends with "END-ISO-10303-21;" and an IGES file with its Terminate
 // section (column 73 'T'); OpenCASCADE's readers mesh what they find in a file cut
 // short, so a truncated file would be meshed in part.
-void require_complete(const std::string& path, const std::string& ext) {
+void require_complete(const std::string& path, ShapeFormat format) {
   const std::string line = last_line(path);
-  if ((ext == "step" || ext == "stp") && line.find("END-ISO-10303-21;") == std::string::npos) {
+  if (format == ShapeFormat::step && line.find("END-ISO-10303-21;") == std::string::npos) {
     throw InputError("'" + path + "' is cut short: a STEP file ends with END-ISO-10303-21;");
   }
-  if ((ext == "iges" || ext == "igs") && (line.size() < 73 || line[72] != 'T')) {
+  if (format == ShapeFormat::iges && (line.size() < 73 || line[72] != 'T')) {
     throw InputError("'" + path + "' is cut short: an IGES file ends with its Terminate section");
-  }
-}
-
-template <typename Reader>
-TopoDS_Shape read_with(Reader& reader, const std::string& path, const char* format) {
-  try {
-    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
-      throw InputError("cannot read '" + path + "' as " + format);
-    }
-    if (reader.TransferRoots() == 0) {
-      throw InputError("'" + path + "' holds no shape OpenCASCADE can transfer");
-    }
-    return reader.OneShape();
-  } catch (const InputError&) {
-    throw;
-  } catch (...) {
-    throw InputError("'" + path + "' is damaged: OpenCASCADE could not read it as " + format);
   }
 }
 
@@ -176,23 +149,14 @@ TopoDS_Shape read_checked_brep(std::istream& in, const std::string& what) {
 
 }  // namespace
 
-bool is_shape_path(const std::string& path) {
-  const std::string ext = extension_of(path);
-  return ext == "step" || ext == "stp" || ext == "iges" || ext == "igs" || ext == "brep" || ext == "brp";
-}
-
 TopoDS_Shape read_shape(const std::string& path) {
   if (!std::ifstream(path).good()) throw InputError("cannot open '" + path + "'");
-  const std::string ext = extension_of(path);
+  const ShapeFormat format = shape_format_of(path);
   TopoDS_Shape shape;
-  if (ext == "step" || ext == "stp" || ext == "iges" || ext == "igs") require_complete(path, ext);
-  if (ext == "step" || ext == "stp") {
-    STEPControl_Reader reader;
-    shape = read_with(reader, path, "STEP");
-  } else if (ext == "iges" || ext == "igs") {
-    IGESControl_Reader reader;
-    shape = read_with(reader, path, "IGES");
-  } else if (ext == "brep" || ext == "brp") {
+  if (format == ShapeFormat::step || format == ShapeFormat::iges) {
+    require_complete(path, format);
+    shape = read_exchange_file(path, format == ShapeFormat::step ? ExchangeFormat::step : ExchangeFormat::iges);
+  } else if (format == ShapeFormat::brep) {
     std::ifstream check(path);
     const std::string problem = brep_problem(check);
     if (!problem.empty()) throw InputError("'" + path + "' " + problem);

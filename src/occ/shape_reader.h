@@ -6,6 +6,8 @@
 
 #include <string>
 
+#include "occ/shape_formats.h"  // is_shape_path
+
 namespace tquad {
 
 // The file's format follows its extension: .step/.stp, .iges/.igs, .brep/.brp.
@@ -14,8 +16,5 @@ TopoDS_Shape read_shape(const std::string& path);
 
 // Throws InputError when the text is not a BREP shape with at least one face.
 TopoDS_Shape read_brep_text(const std::string& brep);
-
-// True for the extensions read_shape reads.
-bool is_shape_path(const std::string& path);
 
 }  // namespace tquad

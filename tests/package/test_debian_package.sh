@@ -31,7 +31,8 @@ echo "Depends: $depends"
 root="$scratch/root"
 dpkg-deb -x "$deb" "$root"
 mod="$root/usr/share/freecad/Mod/TemplateQuad"
-for path in usr/bin/tquad usr/lib/python3/dist-packages/tquad/__init__.py \
+for path in usr/bin/tquad usr/lib/templatequad/tquad_cad.so usr/lib/templatequad/tquad_exchange.so \
+            usr/lib/python3/dist-packages/tquad/__init__.py \
             usr/share/freecad/Mod/TemplateQuad/package.xml \
             usr/share/freecad/Mod/TemplateQuad/LICENSE \
             usr/share/freecad/Mod/TemplateQuad/freecad_workbench/freecad/templatequad/factory.py \
@@ -46,6 +47,8 @@ example="$repo/resources/shapes/plate_with_hole.step"
 "$root/usr/bin/tquad" mesh "$example" -o "$scratch/plate.vtu" >"$scratch/cli.log" ||
   { cat "$scratch/cli.log"; fail "the packaged tquad could not mesh $example"; }
 [[ -s "$scratch/plate.vtu" ]] || fail "the packaged tquad wrote no mesh"
+# The command links no OpenCASCADE library; its CAD layer is loaded from its modules.
+if readelf -d "$root/usr/bin/tquad" | grep -q 'NEEDED.*libTK'; then fail "/usr/bin/tquad links OpenCASCADE"; fi
 echo "command: $(grep -m1 quads "$scratch/cli.log" | sed 's/^ *//')"
 
 PYTHONPATH="$root/usr/lib/python3/dist-packages" /usr/bin/python3 - "$example" "$root" <<'PY'

@@ -1,0 +1,35 @@
+// read_exchange_file: a STEP or IGES file through OpenCASCADE's data exchange readers.
+//
+// Two definitions, chosen when a program is linked:
+//   exchange_reader.cpp         calls the readers (the library, the Python module, tests);
+//   exchange_reader_loader.cpp  loads them first, from the module tquad_exchange.so
+//                               beside the calling module (the command's CAD layer).
+// Debian links OpenCASCADE's libraries to bind every symbol when they are loaded; the
+// STEP and IGES toolkits are half of what the command's CAD layer loads, 36 ms of its
+// start and 12 MB of memory (measured: a program linking them against one linking the
+// modeling toolkits alone), so the command loads them only for a STEP or IGES file,
+// in the reader's child process (isolated_reader.h).
+#pragma once
+
+#include <TopoDS_Shape.hxx>
+
+#include <stdexcept>
+#include <string>
+
+namespace tquad {
+
+enum class ExchangeFormat { step, iges };
+
+// The readers could not be loaded (an incomplete installation): a failure of the
+// program, not of the file.
+class ExchangeReadersUnavailable : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The file's shape (all its roots as one). Throws InputError naming the file when the
+// reader cannot read it or it holds no shape the reader can transfer; the loading
+// definition throws ExchangeReadersUnavailable when the module is missing.
+TopoDS_Shape read_exchange_file(const std::string& path, ExchangeFormat format);
+
+}  // namespace tquad

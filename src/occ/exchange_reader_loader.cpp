@@ -1,0 +1,52 @@
+// read_exchange_file through the module tquad_exchange.so (exchange_reader.h): the
+// module is looked for in the folder of the module or program this code is linked
+// into, and loaded at the first STEP or IGES file (and kept: OpenCASCADE's libraries
+// are not made to be unloaded).
+#include <dlfcn.h>
+
+#include <stdexcept>
+
+#include "core/input_error.h"
+#include "occ/exchange_module.h"
+#include "occ/exchange_reader.h"
+
+namespace tquad {
+
+namespace {
+
+// The folder holding the file this function is linked into, with its last '/'.
+std::string own_folder() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&own_folder), &info) == 0 || info.dli_fname == nullptr) return "";
+  const std::string file = info.dli_fname;
+  const auto slash = file.find_last_of('/');
+  return slash == std::string::npos ? "" : file.substr(0, slash + 1);
+}
+
+ReadExchangeEntry load_entry() {
+  const std::string module = own_folder() + kExchangeModuleFile;
+  void* handle = dlopen(module.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (handle == nullptr) {
+    const char* why = dlerror();
+    throw ExchangeReadersUnavailable("cannot load the STEP and IGES readers (" + module + "): " + (why ? why : "unknown") +
+                                     "; the installation is incomplete");
+  }
+  auto entry = reinterpret_cast<ReadExchangeEntry>(dlsym(handle, kExchangeEntryPoint));
+  if (entry == nullptr) throw ExchangeReadersUnavailable(module + " has no " + kExchangeEntryPoint);
+  return entry;
+}
+
+}  // namespace
+
+TopoDS_Shape read_exchange_file(const std::string& path, ExchangeFormat format) {
+  const ReadExchangeEntry entry = load_entry();
+  TopoDS_Shape shape;
+  std::string error;
+  switch (entry(path.c_str(), format == ExchangeFormat::step ? 0 : 1, &shape, &error)) {
+    case 0: return shape;
+    case 2: throw InputError(error);
+    default: throw std::runtime_error(error);
+  }
+}
+
+}  // namespace tquad
