@@ -45,7 +45,7 @@ std::string edge_name(NodeId a, NodeId b) { return std::to_string(a) + "-" + std
 // so a node's short list holds every side between it and a higher neighbour.
 std::string check_edges(const QuadMesh& mesh, const std::vector<int>& start) {
   const int boundary_points = start.back();
-  const CompressedLists sides = CompressedLists::build(mesh.nodes.size(), [&](auto add) {
+  const SlottedLists sides = SlottedLists::build(mesh.nodes.size(), [&](auto add) {
     for (const Quad& q : mesh.quads) {
       for (int i = 0; i < 4; ++i) {
         const NodeId a = q[i], b = q[(i + 1) % 4];
@@ -55,8 +55,9 @@ std::string check_edges(const QuadMesh& mesh, const std::vector<int>& start) {
   });
   std::vector<int> list;
   long long boundary_found = 0;
-  for (NodeId low = 0; low + 1 < static_cast<NodeId>(sides.offsets.size()); ++low) {
-    list.assign(sides.items.begin() + sides.offsets[low], sides.items.begin() + sides.offsets[low + 1]);
+  for (NodeId low = 0; low < static_cast<NodeId>(mesh.nodes.size()); ++low) {
+    list.clear();
+    sides.for_each(low, [&](int side) { list.push_back(side); });
     std::sort(list.begin(), list.end());
     for (std::size_t k = 0; k < list.size();) {
       const NodeId high = list[k] >> 1;

@@ -3,6 +3,7 @@
 // smoothing.h).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -36,6 +37,66 @@ struct CompressedLists {
 // The quads around each node, in quad order.
 inline CompressedLists quads_around_nodes(std::size_t nodes, const std::vector<Quad>& quads) {
   return CompressedLists::build(nodes, [&](auto add) {
+    for (std::size_t k = 0; k < quads.size(); ++k) for (NodeId n : quads[k]) add(n, static_cast<int>(k));
+  });
+}
+
+// Per-node lists of non-negative items in the order added, in four slots a node (-1
+// where it holds fewer) and, for a node with more, the rest in a list sorted by node.
+// A node of a quad mesh mostly has four quads and is the lower end of four quad
+// sides: for such lists this takes 16 bytes a node where CompressedLists takes 16 a
+// quad and 4 a node, 6 MB less at the smoother's and the mesh check's peaks on the
+// 1.52 M-quad rectangle.
+class SlottedLists {
+ public:
+  // add_pairs(add) calls add(node, item) for every pair, item >= 0, once.
+  template <typename AddPairs>
+  static SlottedLists build(std::size_t nodes, const AddPairs& add_pairs) {
+    SlottedLists lists;
+    lists.slots_.assign(4 * nodes, -1);
+    lists.has_more_.assign(nodes, false);
+    add_pairs([&](NodeId node, int item) {
+      int* slot = &lists.slots_[4 * static_cast<std::size_t>(node)];
+      int i = 0;
+      while (i < 4 && slot[i] >= 0) ++i;
+      if (i < 4) {
+        slot[i] = item;
+      } else {
+        lists.more_.push_back({node, item});
+        lists.has_more_[node] = true;
+      }
+    });
+    std::stable_sort(lists.more_.begin(), lists.more_.end(),
+                     [](const More& a, const More& b) { return a.node < b.node; });
+    return lists;
+  }
+
+  // Calls visit(item) for each item of node n, in the order added.
+  template <typename Visit>
+  void for_each(NodeId n, const Visit& visit) const {
+    const int* slot = &slots_[4 * static_cast<std::size_t>(n)];
+    for (int i = 0; i < 4 && slot[i] >= 0; ++i) visit(slot[i]);
+    if (!has_more_[n]) return;
+    auto it = std::lower_bound(more_.begin(), more_.end(), n, [](const More& m, NodeId node) { return m.node < node; });
+    for (; it != more_.end() && it->node == n; ++it) visit(it->item);
+  }
+
+  // The first item of node n, or -1 when it has none.
+  int first(NodeId n) const { return slots_[4 * static_cast<std::size_t>(n)]; }
+
+ private:
+  struct More {
+    NodeId node;
+    int item;
+  };
+  std::vector<int> slots_;
+  std::vector<bool> has_more_;
+  std::vector<More> more_;
+};
+
+// The quads around each node, in quad order, in four slots a node (SlottedLists).
+inline SlottedLists slotted_quads_around_nodes(std::size_t nodes, const std::vector<Quad>& quads) {
+  return SlottedLists::build(nodes, [&](auto add) {
     for (std::size_t k = 0; k < quads.size(); ++k) for (NodeId n : quads[k]) add(n, static_cast<int>(k));
   });
 }

@@ -237,7 +237,7 @@ template <typename Nodes>
 class Smoother {
  public:
   Smoother(const std::vector<Quad>& quads, int fixed, Nodes& nodes)
-      : quads_(quads), fixed_(fixed), nodes_(nodes), quads_of_(quads_around_nodes(nodes.size(), quads)) {}
+      : quads_(quads), fixed_(fixed), nodes_(nodes), quads_of_(slotted_quads_around_nodes(nodes.size(), quads)) {}
 
   SmoothingResult run(const SmoothingOptions& options) {
     return run(options, scan_corners(quads_, fixed_, nodes_, options.good_enough).deciding);
@@ -302,10 +302,10 @@ class Smoother {
   // always in the same order.
   template <typename Visit>
   void for_each_quad_around(int n, const Visit& visit) const {
-    for (int k = quads_of_.offsets[n]; k < quads_of_.offsets[n + 1]; ++k) {
-      const Quad& q = quads_[quads_of_.items[k]];
+    quads_of_.for_each(n, [&](int k) {
+      const Quad& q = quads_[k];
       visit(corners_of(q, nodes_), corner_of(q, n));
-    }
+    });
   }
 
   LocalQuality local_quality(int n) const {
@@ -348,9 +348,9 @@ class Smoother {
     Vec3 first, second;
   };
   LocalFrame local_frame(int n) const {
-    const CompressedLists& around = quads_of_;
-    if (around.offsets[n] == around.offsets[n + 1]) return {{1, 0, 0}, {0, 1, 0}};
-    const Quad& q = quads_[around.items[around.offsets[n]]];
+    const int first = quads_of_.first(n);
+    if (first < 0) return {{1, 0, 0}, {0, 1, 0}};
+    const Quad& q = quads_[first];
     Vec3 d = nodes_.param(q[(corner_of(q, n) + 1) % 4]) - nodes_.param(n);
     d.z = 0;
     d = unit(d);
@@ -544,16 +544,16 @@ class Smoother {
   // a 1.5 M-quad rectangle.)
   template <typename Visit>
   void for_each_neighbour(int n, const Visit& visit) const {
-    for (int k = quads_of_.offsets[n]; k < quads_of_.offsets[n + 1]; ++k) {
-      const Quad& q = quads_[quads_of_.items[k]];
+    quads_of_.for_each(n, [&](int k) {
+      const Quad& q = quads_[k];
       visit(q[(corner_of(q, n) + 1) % 4]);
-    }
+    });
   }
 
   const std::vector<Quad>& quads_;
   int fixed_;
   Nodes& nodes_;
-  CompressedLists quads_of_;  // the quads around each node
+  SlottedLists quads_of_;  // the quads around each node
   // The ascents' buffers, kept to spare an allocation per node.
   std::vector<double> values_, gradient_first_, gradient_second_;
   std::vector<Vec3> gradients_;
