@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <random>
 
 #include "core/quality.h"
 
@@ -9,6 +11,31 @@ namespace tquad {
 namespace {
 
 const Vec3 kUp{0, 0, 1};
+
+// The same double, bit for bit (NaN included).
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+TEST(Quality, OnePassGivesTheSeparateMeasuresBitForBit) {
+  // Random quads, planar and not, with coincident corners and zero normals mixed in.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> coordinate(-2.0, 2.0);
+  std::uniform_int_distribution<int> kind(0, 5);
+  int collapsed = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    std::array<Vec3, 4> p;
+    for (Vec3& v : p) v = {coordinate(rng), coordinate(rng), trial % 2 ? coordinate(rng) : 0.0};
+    if (kind(rng) == 0) p[2] = p[1];                                  // a zero-length side
+    if (kind(rng) == 0) p[3] = p[0] + 1e-5 * (p[3] - p[0]);           // a collapsed side
+    Vec3 normal = trial % 3 == 0 ? Vec3{0, 0, 1} : cross(p[2] - p[0], p[3] - p[1]);
+    if (kind(rng) == 0) normal = {0, 0, 0};
+    const QuadQuality q = quad_quality(p, normal);
+    ASSERT_TRUE(same_bits(q.lee_lo, lee_lo_quality(p, normal))) << trial;
+    ASSERT_TRUE(same_bits(q.scaled_jacobian, scaled_jacobian(p, normal))) << trial;
+    ASSERT_EQ(q.collapsed, is_collapsed(p)) << trial;
+    collapsed += q.collapsed ? 1 : 0;
+  }
+  EXPECT_GT(collapsed, 100);
+}
 
 TEST(Quality, RectanglesScoreOne) {
   for (double w : {1.0, 0.2, 5.0}) {

@@ -27,7 +27,7 @@ struct MeasuredQuality {
 };
 MeasuredQuality measure(const QuadMesh& mesh, const std::optional<Vec3>& plane_normal) {
   MeasuredQuality out{per_quad_quality(mesh.nodes, mesh.quads, plane_normal), {}};
-  out.summary = summarize_quality(out.per_quad, mesh.nodes, mesh.quads);
+  out.summary = summarize_quality(out.per_quad);
   return out;
 }
 

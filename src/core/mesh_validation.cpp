@@ -1,6 +1,7 @@
 #include "core/mesh_validation.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <utility>
@@ -111,8 +112,19 @@ std::string check_nodes(const QuadMesh& mesh) {
   std::size_t size = 2;
   while (size < 2 * mesh.nodes.size()) size *= 2;
   std::vector<NodeId> slots(size, 0);
-  for (NodeId i = 0; i < static_cast<NodeId>(mesh.nodes.size()); ++i) {
-    std::size_t slot = position_hash(mesh.nodes[i]) & (size - 1);
+  // Each node's first slot is a cache miss of a table larger than the caches: it is
+  // asked for kAhead nodes early (0.06 s of the 1.52 M-quad rectangle's check before).
+  constexpr NodeId kAhead = 16;
+  const auto count = static_cast<NodeId>(mesh.nodes.size());
+  std::array<std::size_t, kAhead> first_slot{};
+  for (NodeId i = 0; i < std::min(kAhead, count); ++i) first_slot[i] = position_hash(mesh.nodes[i]) & (size - 1);
+  for (NodeId i = 0; i < count; ++i) {
+    std::size_t slot = first_slot[i % kAhead];
+    if (i + kAhead < count) {
+      const std::size_t ahead = position_hash(mesh.nodes[i + kAhead]) & (size - 1);
+      __builtin_prefetch(&slots[ahead]);
+      first_slot[i % kAhead] = ahead;
+    }
     for (; slots[slot] != 0; slot = (slot + 1) & (size - 1)) {
       const NodeId other = slots[slot] - 1;
       if (mesh.nodes[other] == mesh.nodes[i]) {

@@ -66,6 +66,43 @@ QuadCorners quad_corners(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>
   return out;
 }
 
+QuadQuality quad_quality(const std::array<Vec3, 4>& p, const Vec3& normal) {
+  // Each expression as lee_lo_quality, corner_scaled_jacobian and is_collapsed write
+  // it: the side before corner i, p[i - 1] - p[i], is exactly minus edge i - 1, so its
+  // length is length[i - 1]; the corner's cross product serves both measures.
+  std::array<Vec3, 4> edge;  // edge[i] from corner i to corner i + 1
+  std::array<double, 4> length;
+  double shortest = INFINITY, longest = 0;
+  for (int i = 0; i < 4; ++i) {
+    edge[i] = p[(i + 1) % 4] - p[i];
+    length[i] = norm(edge[i]);
+    shortest = std::min(shortest, length[i]);
+    longest = std::max(longest, length[i]);
+  }
+  const double normal_length = norm(normal);
+  std::array<double, 4> alpha;
+  QuadQuality out;
+  out.scaled_jacobian = 1.0;
+  for (int i = 0; i < 4; ++i) {
+    const Vec3& a = edge[i];
+    const Vec3 b = p[(i + 3) % 4] - p[i], c = p[(i + 1) % 4] - p[(i + 3) % 4];
+    const double twice_area = dot(cross(a, b), normal);
+    const double squares = dot(a, a) + dot(b, b) + dot(c, c);
+    alpha[i] = squares > 0 ? std::sqrt(3.0) * twice_area / squares : 0.0;
+    const double lengths = length[i] * length[(i + 3) % 4];
+    const double corner = lengths == 0 ? -1.0 : normal_length > 0 ? twice_area / (lengths * normal_length) : 0.0;
+    out.scaled_jacobian = std::min(out.scaled_jacobian, corner);
+  }
+  std::sort(alpha.begin(), alpha.end(), std::greater<double>());
+  if (alpha[3] <= 0) {
+    out.lee_lo = alpha[0] > 0 ? std::max(-1.0, alpha[3] / alpha[0]) : -1.0;
+  } else {
+    out.lee_lo = (alpha[2] * alpha[3]) / (alpha[0] * alpha[1]);
+  }
+  out.collapsed = shortest < kCollapsedEdgeRatio * longest;
+  return out;
+}
+
 bool is_collapsed(const std::array<Vec3, 4>& p) {
   double shortest = INFINITY, longest = 0;
   for (int i = 0; i < 4; ++i) {
@@ -118,8 +155,10 @@ PerQuadQuality per_quad_quality(const std::vector<Vec3>& nodes, const std::vecto
       const double length = norm(normal);
       normal = length > 0 ? (1.0 / length) * normal : Vec3{0, 0, 0};
     }
-    out.lee_lo.push_back(lee_lo_quality(p, normal));
-    out.scaled_jacobian.push_back(scaled_jacobian(p, normal));
+    const QuadQuality quality = quad_quality(p, normal);
+    out.lee_lo.push_back(quality.lee_lo);
+    out.scaled_jacobian.push_back(quality.scaled_jacobian);
+    out.collapsed += quality.collapsed ? 1 : 0;
   }
   return out;
 }
@@ -145,19 +184,16 @@ void summarize_jacobians(QualitySummary& summary, const std::vector<double>& per
 
 QualitySummary summarize_quality(const std::vector<Vec3>& nodes, const std::vector<Quad>& quads,
                                  const std::optional<Vec3>& reference) {
-  return summarize_quality(per_quad_quality(nodes, quads, reference), nodes, quads);
+  return summarize_quality(per_quad_quality(nodes, quads, reference));
 }
 
-QualitySummary summarize_quality(const PerQuadQuality& per_quad, const std::vector<Vec3>& nodes,
-                                 const std::vector<Quad>& quads) {
+QualitySummary summarize_quality(const PerQuadQuality& per_quad) {
   QualitySummary summary;
   Accumulator lee_lo;
   for (double q : per_quad.lee_lo) lee_lo.add(q);
   summary.lee_lo = lee_lo.stats();
   summarize_jacobians(summary, per_quad.scaled_jacobian, kInvertedBelow);
-  for (const Quad& q : quads) {
-    if (is_collapsed({nodes[q[0]], nodes[q[1]], nodes[q[2]], nodes[q[3]]})) ++summary.collapsed;
-  }
+  summary.collapsed = per_quad.collapsed;
   return summary;
 }
 
@@ -167,7 +203,7 @@ void use_scaled_jacobians(QualitySummary& summary, const std::vector<double>& pe
 
 QualitySummary measure_mesh_quality(ShapeMesh& mesh, const std::optional<Vec3>& reference) {
   PerQuadQuality per_quad = per_quad_quality(mesh.nodes, mesh.quads, reference);
-  QualitySummary summary = summarize_quality(per_quad, mesh.nodes, mesh.quads);
+  QualitySummary summary = summarize_quality(per_quad);
   mesh.lee_lo = std::move(per_quad.lee_lo);
   if (mesh.scaled_jacobian.size() == mesh.quads.size() && !mesh.quads.empty()) {
     use_scaled_jacobians(summary, mesh.scaled_jacobian);
