@@ -12,6 +12,11 @@ namespace {
 // Passes over the nodes near inverted corners; each pass moves every such node to its
 // best place given the others, and a fold a few layers deep needs a few passes.
 constexpr int kMaxPasses = 100;
+// Passes stop when this many in a row have not brought the fewest inverted corners
+// yet seen lower. A fuzzed curved loop (160 quads, 202 inverted corners) ran all 100
+// passes three times over, its count rising to 277, before everything went back:
+// 0.3 s of release time, 8 s under the sanitizers.
+constexpr int kStalledPasses = 10;
 
 // The walls' slope over the steepest corner constraint: steep enough never to bind
 // inside the box.
@@ -47,12 +52,15 @@ class AreaUntangler {
     result.inverted_before = inverted_corners(quads_, param_, orientation_);
     result.inverted_after = result.inverted_before;
     const std::vector<Vec3> start = param_;
-    for (int pass = 0; pass < kMaxPasses && result.inverted_after > 0; ++pass) {
+    int fewest = result.inverted_before, stalled = 0;
+    for (int pass = 0; pass < kMaxPasses && result.inverted_after > 0 && stalled < kStalledPasses; ++pass) {
       long long moves = 0;
       for (int n : nodes_near_inverted_corners()) moves += move_to_best_place(n) ? 1 : 0;
       result.moves += moves;
       result.inverted_after = inverted_corners(quads_, param_, orientation_);
       if (moves == 0) break;
+      stalled = result.inverted_after < fewest ? 0 : stalled + 1;
+      fewest = std::min(fewest, result.inverted_after);
     }
     if (result.inverted_after >= result.inverted_before) {
       // No fewer folded corners: the nodes go back (through place_, so the caller's data follow)
