@@ -1,6 +1,6 @@
 # Installation and the Debian package (cpack -G DEB, from the build tree):
 #   /usr/bin/tquad                                the command
-#   /usr/lib/templatequad/                        its CAD layer and STEP/IGES readers,
+#   /usr/lib/templatequad/                        its CAD layer, STEP and IGES readers,
 #                                                 loaded for CAD inputs (src/cli/cad_input.h)
 #   /usr/lib/python3/dist-packages/tquad/         the module, for Debian's python3
 #                                                 (FreeCAD's; on its sys.path)
@@ -18,7 +18,7 @@ set(TQUAD_FREECAD_MOD_DIR "share/freecad/Mod/TemplateQuad"
 
 install(TARGETS tquad RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # bin/ and lib/templatequad/ side by side, as in the build tree (cad_input_loader.cpp).
-install(TARGETS tquad_cad tquad_exchange LIBRARY DESTINATION lib/templatequad)
+install(TARGETS tquad_cad tquad_step tquad_iges LIBRARY DESTINATION lib/templatequad)
 install(TARGETS tquad_python LIBRARY DESTINATION ${TQUAD_PYTHON_INSTALL_DIR})
 install(FILES src/python/tquad/__init__.py src/python/tquad/__init__.pyi src/python/tquad/py.typed
         DESTINATION ${TQUAD_PYTHON_INSTALL_DIR})

@@ -1,5 +1,5 @@
-// The module tquad_exchange.so: OpenCASCADE's STEP and IGES readers behind one C entry
-// point (exchange_module.h).
+// The modules tquad_step.so (TQUAD_EXCHANGE_STEP defined) and tquad_iges.so: one of
+// OpenCASCADE's readers behind a C entry point (exchange_module.h).
 #include "occ/exchange_module.h"
 
 #include <exception>
@@ -7,11 +7,15 @@
 #include "core/input_error.h"
 #include "occ/exchange_reader.h"
 
-extern "C" __attribute__((visibility("default"))) int tquad_read_exchange_file(const char* path, int format,
+extern "C" __attribute__((visibility("default"))) int tquad_read_exchange_file(const char* path,
                                                                               TopoDS_Shape* shape,
                                                                               std::string* error) {
   try {
-    *shape = tquad::read_exchange_file(path, format == 0 ? tquad::ExchangeFormat::step : tquad::ExchangeFormat::iges);
+#ifdef TQUAD_EXCHANGE_STEP
+    *shape = tquad::read_step_file(path);
+#else
+    *shape = tquad::read_iges_file(path);
+#endif
     return 0;
   } catch (const tquad::InputError& e) {
     *error = e.what();

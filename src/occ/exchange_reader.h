@@ -1,14 +1,17 @@
 // read_exchange_file: a STEP or IGES file through OpenCASCADE's data exchange readers.
 //
 // Two definitions, chosen when a program is linked:
-//   exchange_reader.cpp         calls the readers (the library, the Python module, tests);
-//   exchange_reader_loader.cpp  loads them first, from the module tquad_exchange.so
-//                               beside the calling module (the command's CAD layer).
+//   exchange_reader.cpp         calls read_step_file or read_iges_file (the library, the
+//                               Python module, tests);
+//   exchange_reader_loader.cpp  loads the one reader a file needs first, from the module
+//                               tquad_step.so or tquad_iges.so beside the calling module
+//                               (the command's CAD layer).
 // Debian links OpenCASCADE's libraries to bind every symbol when they are loaded; the
 // STEP and IGES toolkits are half of what the command's CAD layer loads, 36 ms of its
 // start and 12 MB of memory (measured: a program linking them against one linking the
-// modeling toolkits alone), so the command loads them only for a STEP or IGES file,
-// in the reader's child process (isolated_reader.h).
+// modeling toolkits alone; the IGES toolkits and what they pull in, 12 of those ms),
+// so the command loads them only for a STEP or IGES file, each format's alone, in the
+// reader's child process (isolated_reader.h).
 #pragma once
 
 #include <TopoDS_Shape.hxx>
@@ -31,5 +34,9 @@ class ExchangeReadersUnavailable : public std::runtime_error {
 // reader cannot read it or it holds no shape the reader can transfer; the loading
 // definition throws ExchangeReadersUnavailable when the module is missing.
 TopoDS_Shape read_exchange_file(const std::string& path, ExchangeFormat format);
+
+// The readers themselves (step_reader.cpp, iges_reader.cpp), with the same errors.
+TopoDS_Shape read_step_file(const std::string& path);
+TopoDS_Shape read_iges_file(const std::string& path);
 
 }  // namespace tquad

@@ -1,7 +1,7 @@
-// read_exchange_file through the module tquad_exchange.so (exchange_reader.h): the
-// module is looked for in the folder of the module or program this code is linked
-// into, and loaded at the first STEP or IGES file (and kept: OpenCASCADE's libraries
-// are not made to be unloaded).
+// read_exchange_file through the module tquad_step.so or tquad_iges.so
+// (exchange_reader.h): the module is looked for in the folder of the module or program
+// this code is linked into, and loaded at the first file of its format (and kept:
+// OpenCASCADE's libraries are not made to be unloaded).
 #include <dlfcn.h>
 
 #include <stdexcept>
@@ -23,12 +23,13 @@ std::string own_folder() {
   return slash == std::string::npos ? "" : file.substr(0, slash + 1);
 }
 
-ReadExchangeEntry load_entry() {
-  const std::string module = own_folder() + kExchangeModuleFile;
+ReadExchangeEntry load_entry(ExchangeFormat format) {
+  const std::string module = own_folder() + (format == ExchangeFormat::step ? kStepModuleFile : kIgesModuleFile);
   void* handle = dlopen(module.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (handle == nullptr) {
     const char* why = dlerror();
-    throw ExchangeReadersUnavailable("cannot load the STEP and IGES readers (" + module + "): " + (why ? why : "unknown") +
+    throw ExchangeReadersUnavailable(std::string("cannot load the ") + (format == ExchangeFormat::step ? "STEP" : "IGES") +
+                                     " reader (" + module + "): " + (why ? why : "unknown") +
                                      "; the installation is incomplete");
   }
   auto entry = reinterpret_cast<ReadExchangeEntry>(dlsym(handle, kExchangeEntryPoint));
@@ -39,10 +40,10 @@ ReadExchangeEntry load_entry() {
 }  // namespace
 
 TopoDS_Shape read_exchange_file(const std::string& path, ExchangeFormat format) {
-  const ReadExchangeEntry entry = load_entry();
+  const ReadExchangeEntry entry = load_entry(format);
   TopoDS_Shape shape;
   std::string error;
-  switch (entry(path.c_str(), format == ExchangeFormat::step ? 0 : 1, &shape, &error)) {
+  switch (entry(path.c_str(), &shape, &error)) {
     case 0: return shape;
     case 2: throw InputError(error);
     default: throw std::runtime_error(error);

@@ -1,11 +1,13 @@
 // The command's CAD layer is its modules (src/cli/cad_input.h): a boundary file is
 // meshed without them, and a CAD input without its module is an internal failure
-// (exit 1) naming the missing module, with no output; a BREP file needs no STEP and
-// IGES readers.
+// (exit 1) naming the missing module, with no output; a BREP file needs no STEP or
+// IGES reader, and a STEP file no IGES reader.
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <IGESControl_Writer.hxx>
 #include <gtest/gtest.h>
 
 #include "cli_test_support.h"
@@ -53,21 +55,36 @@ TEST_F(CommandModules, ACadInputWithoutTheCadModuleIsAnInternalFailure) {
   expect_missing(tquad, example("plate_with_hole.step"), "tquad_cad.so");
 }
 
-TEST_F(CommandModules, ABrepFileNeedsNoStepAndIgesReaders) {
+TEST_F(CommandModules, ABrepFileNeedsNoStepOrIgesReader) {
   const std::string tquad = install({TQUAD_CAD_MODULE});
   const RunResult r = run_program(tquad, {"mesh", example("cylinder.brep"), "-o", path("cylinder.vtu")});
   EXPECT_EQ(r.exit_status, 0) << r.err;
   EXPECT_TRUE(fs::exists(path("cylinder.vtu")));
   // A STEP file then fails in the reader's child process, as the program's failure
   // (not as a damaged file).
-  expect_missing(tquad, example("plate_with_hole.step"), "tquad_exchange.so");
+  expect_missing(tquad, example("plate_with_hole.step"), "tquad_step.so");
 }
 
-TEST_F(CommandModules, AllModulesMeshAStepFile) {
-  const std::string tquad = install({TQUAD_CAD_MODULE, TQUAD_EXCHANGE_MODULE});
+TEST_F(CommandModules, AStepFileNeedsNoIgesReader) {
+  const std::string tquad = install({TQUAD_CAD_MODULE, TQUAD_STEP_MODULE});
   const RunResult r = run_program(tquad, {"mesh", example("plate_with_hole.step"), "-o", path("plate.vtu")});
   EXPECT_EQ(r.exit_status, 0) << r.err;
   EXPECT_TRUE(fs::exists(path("plate.vtu")));
+}
+
+TEST_F(CommandModules, AnIgesFileNeedsTheIgesReaderOnly) {
+  const std::string iges = path("box.igs");
+  IGESControl_Writer writer("MM", 1);  // 1: BRep mode
+  writer.AddShape(BRepPrimAPI_MakeBox(10, 20, 30).Shape());
+  writer.ComputeModel();
+  ASSERT_TRUE(writer.Write(iges.c_str()));
+  const std::string tquad = install({TQUAD_CAD_MODULE, TQUAD_STEP_MODULE});
+  expect_missing(tquad, iges, "tquad_iges.so");
+  fs::copy_file(TQUAD_IGES_MODULE, dir_ / "lib" / "templatequad" / "tquad_iges.so");
+  fs::remove(dir_ / "lib" / "templatequad" / "tquad_step.so");
+  const RunResult r = run_program(tquad, {"mesh", iges, "-o", path("box.vtu")});
+  EXPECT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(path("box.vtu")));
 }
 
 }  // namespace

@@ -31,7 +31,8 @@ echo "Depends: $depends"
 root="$scratch/root"
 dpkg-deb -x "$deb" "$root"
 mod="$root/usr/share/freecad/Mod/TemplateQuad"
-for path in usr/bin/tquad usr/lib/templatequad/tquad_cad.so usr/lib/templatequad/tquad_exchange.so \
+for path in usr/bin/tquad usr/lib/templatequad/tquad_cad.so usr/lib/templatequad/tquad_step.so \
+            usr/lib/templatequad/tquad_iges.so \
             usr/lib/python3/dist-packages/tquad/__init__.py \
             usr/share/freecad/Mod/TemplateQuad/package.xml \
             usr/share/freecad/Mod/TemplateQuad/LICENSE \
