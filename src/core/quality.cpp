@@ -35,16 +35,30 @@ double scaled_jacobian(const std::array<Vec3, 4>& p, const Vec3& normal) {
   return worst;
 }
 
-QuadCorners quad_corners(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>& unit_normal) {
-  std::array<Vec3, 4> edge;  // edge[i] from corner i to corner i + 1
+namespace {
+
+// A quad's sides, edge[i] from corner i to corner i + 1, their lengths, the shortest
+// and the longest.
+struct QuadSides {
+  std::array<Vec3, 4> edge;
   std::array<double, 4> length;
   double shortest = INFINITY, longest = 0;
+};
+QuadSides quad_sides(const std::array<Vec3, 4>& p) {
+  QuadSides s;
   for (int i = 0; i < 4; ++i) {
-    edge[i] = p[(i + 1) % 4] - p[i];
-    length[i] = norm(edge[i]);
-    shortest = std::min(shortest, length[i]);
-    longest = std::max(longest, length[i]);
+    s.edge[i] = p[(i + 1) % 4] - p[i];
+    s.length[i] = norm(s.edge[i]);
+    s.shortest = std::min(s.shortest, s.length[i]);
+    s.longest = std::max(s.longest, s.length[i]);
   }
+  return s;
+}
+
+}  // namespace
+
+QuadCorners quad_corners(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>& unit_normal) {
+  const auto [edge, length, shortest, longest] = quad_sides(p);
   QuadCorners out;
   out.collapsed = shortest < kCollapsedEdgeRatio * longest;
   out.edge_ratio = longest > 0 ? shortest / longest : 0.0;
@@ -70,15 +84,7 @@ QuadQuality quad_quality(const std::array<Vec3, 4>& p, const Vec3& normal) {
   // Each expression as lee_lo_quality, corner_scaled_jacobian and is_collapsed write
   // it: the side before corner i, p[i - 1] - p[i], is exactly minus edge i - 1, so its
   // length is length[i - 1]; the corner's cross product serves both measures.
-  std::array<Vec3, 4> edge;  // edge[i] from corner i to corner i + 1
-  std::array<double, 4> length;
-  double shortest = INFINITY, longest = 0;
-  for (int i = 0; i < 4; ++i) {
-    edge[i] = p[(i + 1) % 4] - p[i];
-    length[i] = norm(edge[i]);
-    shortest = std::min(shortest, length[i]);
-    longest = std::max(longest, length[i]);
-  }
+  const auto [edge, length, shortest, longest] = quad_sides(p);
   const double normal_length = norm(normal);
   std::array<double, 4> alpha;
   QuadQuality out;
