@@ -3,6 +3,7 @@
 #include "occ/exchange_module.h"
 
 #include <exception>
+#include <type_traits>
 
 #include "core/input_error.h"
 #include "occ/exchange_reader.h"
