@@ -83,7 +83,6 @@ CadInputMesh mesh_cad_input(const MeshCommand& command, std::ostream& err) {
   const auto measuring = std::chrono::steady_clock::now();
   out.quality = measure_mesh_quality(out.result.mesh, std::nullopt);
   out.result.stage_seconds["quality"] = seconds_since(measuring);
-  out.mesh = std::move(out.result.mesh);
   return out;
 }
 

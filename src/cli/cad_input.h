@@ -21,9 +21,8 @@
 namespace tquad {
 
 struct CadInputMesh {
-  ShapeMesh mesh;
+  ShapeMeshResult result;  // the mesh and the pipeline's report
   QualitySummary quality;
-  ShapeMeshResult result;  // its `mesh` is moved to the one above
 };
 
 // Reads command.input in a child process (occ/isolated_reader.h), meshes the faces

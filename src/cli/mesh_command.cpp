@@ -209,9 +209,9 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
     }
     // Every (selected) face, conforming across shared edges (cad_input.h).
     CadInputMesh cad = mesh_cad_input(command, err);
-    shape = std::move(cad.mesh);
-    quality = cad.quality;
     shape_result = std::move(cad.result);
+    shape = std::move(shape_result.mesh);
+    quality = cad.quality;
   }
   const auto writing = std::chrono::steady_clock::now();
   switch (format) {

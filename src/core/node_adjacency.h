@@ -34,11 +34,17 @@ struct CompressedLists {
   }
 };
 
+// add_pairs for the lists' build(): (node, quad) for each corner of each quad, in quad
+// order.
+inline auto quad_corner_pairs(const std::vector<Quad>& quads) {
+  return [&quads](auto add) {
+    for (std::size_t k = 0; k < quads.size(); ++k) for (NodeId n : quads[k]) add(n, static_cast<int>(k));
+  };
+}
+
 // The quads around each node, in quad order.
 inline CompressedLists quads_around_nodes(std::size_t nodes, const std::vector<Quad>& quads) {
-  return CompressedLists::build(nodes, [&](auto add) {
-    for (std::size_t k = 0; k < quads.size(); ++k) for (NodeId n : quads[k]) add(n, static_cast<int>(k));
-  });
+  return CompressedLists::build(nodes, quad_corner_pairs(quads));
 }
 
 // Per-node lists of non-negative items in the order added, in four slots a node (-1
@@ -96,9 +102,7 @@ class SlottedLists {
 
 // The quads around each node, in quad order, in four slots a node (SlottedLists).
 inline SlottedLists slotted_quads_around_nodes(std::size_t nodes, const std::vector<Quad>& quads) {
-  return SlottedLists::build(nodes, [&](auto add) {
-    for (std::size_t k = 0; k < quads.size(); ++k) for (NodeId n : quads[k]) add(n, static_cast<int>(k));
-  });
+  return SlottedLists::build(nodes, quad_corner_pairs(quads));
 }
 
 struct NodeAdjacency {

@@ -6,36 +6,32 @@
 
 namespace tquad {
 
-double lee_lo_quality(const std::array<Vec3, 4>& p, const Vec3& normal) {
-  std::array<double, 4> alpha;
-  for (int i = 0; i < 4; ++i) {
-    const Vec3& prev = p[(i + 3) % 4];
-    const Vec3& here = p[i];
-    const Vec3& next = p[(i + 1) % 4];
-    const Vec3 a = next - here, b = prev - here, c = next - prev;
-    const double twice_area = dot(cross(a, b), normal);
-    const double squares = dot(a, a) + dot(b, b) + dot(c, c);
-    alpha[i] = squares > 0 ? std::sqrt(3.0) * twice_area / squares : 0.0;
-  }
+namespace {
+
+// The formulas, each written once; the whole-quad measures below share sides and cross
+// products through them.
+
+// Lee-Lo's alpha of a corner whose sides are a and b, c the diagonal between their
+// ends, twice_area = (a x b) . normal.
+double lee_lo_alpha(const Vec3& a, const Vec3& b, const Vec3& c, double twice_area) {
+  const double squares = dot(a, a) + dot(b, b) + dot(c, c);
+  return squares > 0 ? std::sqrt(3.0) * twice_area / squares : 0.0;
+}
+
+// Lee-Lo of a quad from its corners' alphas.
+double lee_lo_of(std::array<double, 4> alpha) {
   std::sort(alpha.begin(), alpha.end(), std::greater<double>());
   if (alpha[3] <= 0) return alpha[0] > 0 ? std::max(-1.0, alpha[3] / alpha[0]) : -1.0;
   return (alpha[2] * alpha[3]) / (alpha[0] * alpha[1]);
 }
 
-double corner_scaled_jacobian(const std::array<Vec3, 4>& p, int i, const Vec3& normal) {
-  const Vec3 a = p[(i + 1) % 4] - p[i], b = p[(i + 3) % 4] - p[i];
-  const double lengths = norm(a) * norm(b), normal_length = norm(normal);
+// A corner's scaled Jacobian from (a x b) . normal, |a| |b| and |normal|.
+double corner_jacobian(double twice_area, double lengths, double normal_length) {
   if (lengths == 0) return -1.0;
-  return normal_length > 0 ? dot(cross(a, b), normal) / (lengths * normal_length) : 0.0;
+  return normal_length > 0 ? twice_area / (lengths * normal_length) : 0.0;
 }
 
-double scaled_jacobian(const std::array<Vec3, 4>& p, const Vec3& normal) {
-  double worst = 1.0;
-  for (int i = 0; i < 4; ++i) worst = std::min(worst, corner_scaled_jacobian(p, i, normal));
-  return worst;
-}
-
-namespace {
+bool collapsed_sides(double shortest, double longest) { return shortest < kCollapsedEdgeRatio * longest; }
 
 // A quad's sides, edge[i] from corner i to corner i + 1, their lengths, the shortest
 // and the longest.
@@ -57,10 +53,33 @@ QuadSides quad_sides(const std::array<Vec3, 4>& p) {
 
 }  // namespace
 
+double lee_lo_quality(const std::array<Vec3, 4>& p, const Vec3& normal) {
+  std::array<double, 4> alpha;
+  for (int i = 0; i < 4; ++i) {
+    const Vec3& prev = p[(i + 3) % 4];
+    const Vec3& here = p[i];
+    const Vec3& next = p[(i + 1) % 4];
+    const Vec3 a = next - here, b = prev - here;
+    alpha[i] = lee_lo_alpha(a, b, next - prev, dot(cross(a, b), normal));
+  }
+  return lee_lo_of(alpha);
+}
+
+double corner_scaled_jacobian(const std::array<Vec3, 4>& p, int i, const Vec3& normal) {
+  const Vec3 a = p[(i + 1) % 4] - p[i], b = p[(i + 3) % 4] - p[i];
+  return corner_jacobian(dot(cross(a, b), normal), norm(a) * norm(b), norm(normal));
+}
+
+double scaled_jacobian(const std::array<Vec3, 4>& p, const Vec3& normal) {
+  double worst = 1.0;
+  for (int i = 0; i < 4; ++i) worst = std::min(worst, corner_scaled_jacobian(p, i, normal));
+  return worst;
+}
+
 QuadCorners quad_corners(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>& unit_normal) {
   const auto [edge, length, shortest, longest] = quad_sides(p);
   QuadCorners out;
-  out.collapsed = shortest < kCollapsedEdgeRatio * longest;
+  out.collapsed = collapsed_sides(shortest, longest);
   out.edge_ratio = longest > 0 ? shortest / longest : 0.0;
   Vec3 own = cross(p[2] - p[0], p[3] - p[1]);  // the diagonals' normal
   const double own_length = norm(own);
@@ -81,8 +100,7 @@ QuadCorners quad_corners(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>
 }
 
 QuadQuality quad_quality(const std::array<Vec3, 4>& p, const Vec3& normal) {
-  // Each expression as lee_lo_quality, corner_scaled_jacobian and is_collapsed write
-  // it: the side before corner i, p[i - 1] - p[i], is exactly minus edge i - 1, so its
+  // The side before corner i, p[i - 1] - p[i], is exactly minus edge i - 1, so its
   // length is length[i - 1]; the corner's cross product serves both measures.
   const auto [edge, length, shortest, longest] = quad_sides(p);
   const double normal_length = norm(normal);
@@ -91,32 +109,20 @@ QuadQuality quad_quality(const std::array<Vec3, 4>& p, const Vec3& normal) {
   out.scaled_jacobian = 1.0;
   for (int i = 0; i < 4; ++i) {
     const Vec3& a = edge[i];
-    const Vec3 b = p[(i + 3) % 4] - p[i], c = p[(i + 1) % 4] - p[(i + 3) % 4];
+    const Vec3 b = p[(i + 3) % 4] - p[i];
     const double twice_area = dot(cross(a, b), normal);
-    const double squares = dot(a, a) + dot(b, b) + dot(c, c);
-    alpha[i] = squares > 0 ? std::sqrt(3.0) * twice_area / squares : 0.0;
-    const double lengths = length[i] * length[(i + 3) % 4];
-    const double corner = lengths == 0 ? -1.0 : normal_length > 0 ? twice_area / (lengths * normal_length) : 0.0;
-    out.scaled_jacobian = std::min(out.scaled_jacobian, corner);
+    alpha[i] = lee_lo_alpha(a, b, p[(i + 1) % 4] - p[(i + 3) % 4], twice_area);
+    out.scaled_jacobian =
+        std::min(out.scaled_jacobian, corner_jacobian(twice_area, length[i] * length[(i + 3) % 4], normal_length));
   }
-  std::sort(alpha.begin(), alpha.end(), std::greater<double>());
-  if (alpha[3] <= 0) {
-    out.lee_lo = alpha[0] > 0 ? std::max(-1.0, alpha[3] / alpha[0]) : -1.0;
-  } else {
-    out.lee_lo = (alpha[2] * alpha[3]) / (alpha[0] * alpha[1]);
-  }
-  out.collapsed = shortest < kCollapsedEdgeRatio * longest;
+  out.lee_lo = lee_lo_of(alpha);
+  out.collapsed = collapsed_sides(shortest, longest);
   return out;
 }
 
 bool is_collapsed(const std::array<Vec3, 4>& p) {
-  double shortest = INFINITY, longest = 0;
-  for (int i = 0; i < 4; ++i) {
-    const double edge = distance(p[i], p[(i + 1) % 4]);
-    shortest = std::min(shortest, edge);
-    longest = std::max(longest, edge);
-  }
-  return shortest < kCollapsedEdgeRatio * longest;
+  const QuadSides sides = quad_sides(p);
+  return collapsed_sides(sides.shortest, sides.longest);
 }
 
 namespace {

@@ -1,11 +1,12 @@
-// read_exchange_file: a STEP or IGES file through OpenCASCADE's data exchange readers.
+// read_step_file, read_iges_file: a STEP or IGES file through OpenCASCADE's data
+// exchange readers.
 //
-// Two definitions, chosen when a program is linked:
-//   exchange_reader.cpp         calls read_step_file or read_iges_file (the library, the
-//                               Python module, tests);
-//   exchange_reader_loader.cpp  loads the one reader a file needs first, from the module
-//                               tquad_step.so or tquad_iges.so beside the calling module
-//                               (the command's CAD layer).
+// Two definitions of each, chosen when a program is linked:
+//   step_reader.cpp, iges_reader.cpp  call the reader (the library, the Python module,
+//                                     tests, and the reader modules themselves);
+//   exchange_reader_loader.cpp        loads the reader first, from the module
+//                                     tquad_step.so or tquad_iges.so beside the calling
+//                                     module (the command's CAD layer).
 // Debian links OpenCASCADE's libraries to bind every symbol when they are loaded; the
 // STEP and IGES toolkits are half of what the command's CAD layer loads, 36 ms of its
 // start and 12 MB of memory (measured: a program linking them against one linking the
@@ -21,8 +22,6 @@
 
 namespace tquad {
 
-enum class ExchangeFormat { step, iges };
-
 // The readers could not be loaded (an incomplete installation): a failure of the
 // program, not of the file.
 class ExchangeReadersUnavailable : public std::runtime_error {
@@ -32,10 +31,7 @@ class ExchangeReadersUnavailable : public std::runtime_error {
 
 // The file's shape (all its roots as one). Throws InputError naming the file when the
 // reader cannot read it or it holds no shape the reader can transfer; the loading
-// definition throws ExchangeReadersUnavailable when the module is missing.
-TopoDS_Shape read_exchange_file(const std::string& path, ExchangeFormat format);
-
-// The readers themselves (step_reader.cpp, iges_reader.cpp), with the same errors.
+// definitions throw ExchangeReadersUnavailable when the module is missing.
 TopoDS_Shape read_step_file(const std::string& path);
 TopoDS_Shape read_iges_file(const std::string& path);
 

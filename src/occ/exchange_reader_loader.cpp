@@ -1,7 +1,7 @@
-// read_exchange_file through the module tquad_step.so or tquad_iges.so
-// (exchange_reader.h): the module is looked for in the folder of the module or program
-// this code is linked into, and loaded at the first file of its format (and kept:
-// OpenCASCADE's libraries are not made to be unloaded).
+// read_step_file and read_iges_file through the modules tquad_step.so and
+// tquad_iges.so (exchange_reader.h): a module is looked for in the folder of the module
+// or program this code is linked into, and loaded at the first file of its format (and
+// kept: OpenCASCADE's libraries are not made to be unloaded).
 #include <dlfcn.h>
 
 #include <stdexcept>
@@ -23,31 +23,33 @@ std::string own_folder() {
   return slash == std::string::npos ? "" : file.substr(0, slash + 1);
 }
 
-ReadExchangeEntry load_entry(ExchangeFormat format) {
-  const std::string module = own_folder() + (format == ExchangeFormat::step ? kStepModuleFile : kIgesModuleFile);
+// The module's entry point; `format` ("STEP", "IGES") names it in messages.
+ReadExchangeEntry load_entry(const char* file, const char* format) {
+  const std::string module = own_folder() + file;
   void* handle = dlopen(module.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (handle == nullptr) {
     const char* why = dlerror();
-    throw ExchangeReadersUnavailable(std::string("cannot load the ") + (format == ExchangeFormat::step ? "STEP" : "IGES") +
-                                     " reader (" + module + "): " + (why ? why : "unknown") +
-                                     "; the installation is incomplete");
+    throw ExchangeReadersUnavailable(std::string("cannot load the ") + format + " reader (" + module +
+                                     "): " + (why ? why : "unknown") + "; the installation is incomplete");
   }
   auto entry = reinterpret_cast<ReadExchangeEntry>(dlsym(handle, kExchangeEntryPoint));
   if (entry == nullptr) throw ExchangeReadersUnavailable(module + " has no " + kExchangeEntryPoint);
   return entry;
 }
 
-}  // namespace
-
-TopoDS_Shape read_exchange_file(const std::string& path, ExchangeFormat format) {
-  const ReadExchangeEntry entry = load_entry(format);
+TopoDS_Shape read_through(const char* file, const char* format, const std::string& path) {
   TopoDS_Shape shape;
   std::string error;
-  switch (entry(path.c_str(), &shape, &error)) {
+  switch (load_entry(file, format)(path.c_str(), &shape, &error)) {
     case 0: return shape;
     case 2: throw InputError(error);
     default: throw std::runtime_error(error);
   }
 }
+
+}  // namespace
+
+TopoDS_Shape read_step_file(const std::string& path) { return read_through(kStepModuleFile, "STEP", path); }
+TopoDS_Shape read_iges_file(const std::string& path) { return read_through(kIgesModuleFile, "IGES", path); }
 
 }  // namespace tquad

@@ -155,7 +155,7 @@ TopoDS_Shape read_shape(const std::string& path) {
   TopoDS_Shape shape;
   if (format == ShapeFormat::step || format == ShapeFormat::iges) {
     require_complete(path, format);
-    shape = read_exchange_file(path, format == ShapeFormat::step ? ExchangeFormat::step : ExchangeFormat::iges);
+    shape = format == ShapeFormat::step ? read_step_file(path) : read_iges_file(path);
   } else if (format == ShapeFormat::brep) {
     std::ifstream check(path);
     const std::string problem = brep_problem(check);
