@@ -1,6 +1,7 @@
 // Quality metrics on shapes whose values are known.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -35,6 +36,68 @@ TEST(Quality, OnePassGivesTheSeparateMeasuresBitForBit) {
     collapsed += q.collapsed ? 1 : 0;
   }
   EXPECT_GT(collapsed, 100);
+}
+
+TEST(Quality, PlanarCornersAreTheGeneralOnesSignedByUp) {
+  // Quads of a plane z = c: random ones, and on a small integer grid (straight
+  // corners, zero-length sides and inverted quads come often there).
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> coordinate(-2.0, 2.0);
+  std::uniform_int_distribution<int> grid(-2, 2);
+  const std::array<Vec3, 4> up = {kUp, kUp, kUp, kUp};
+  int straight = 0, degenerate_side = 0, inverted = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double z = trial % 3 == 0 ? 0.0 : coordinate(rng);
+    std::array<Vec3, 4> p;
+    for (Vec3& v : p) {
+      v = trial % 2 ? Vec3{coordinate(rng), coordinate(rng), z}
+                    : Vec3{double(grid(rng)), double(grid(rng)), z};
+    }
+    const QuadCorners general = quad_corners(p, up), planar = planar_quad_corners(p);
+    for (int i = 0; i < 4; ++i) {
+      ASSERT_EQ(planar.jacobian[i], general.jacobian[i]) << trial << " corner " << i;
+      ASSERT_EQ(planar.own_jacobian[i], general.own_jacobian[i]) << trial << " corner " << i;
+      straight += general.jacobian[i] == 0 ? 1 : 0;
+      degenerate_side += general.jacobian[i] == -1 ? 1 : 0;
+      inverted += general.jacobian[i] < 0 && general.jacobian[i] > -1 ? 1 : 0;
+    }
+    ASSERT_EQ(planar.collapsed, general.collapsed) << trial;
+    ASSERT_TRUE(same_bits(planar.edge_ratio, general.edge_ratio)) << trial;
+  }
+  EXPECT_GT(straight, 100);
+  EXPECT_GT(degenerate_side, 100);
+  EXPECT_GT(inverted, 1000);
+}
+
+TEST(Quality, LeeLoIsTheProductOfItsSortedCornerMeasures) {
+  // Lee-Lo from its definition (quality.h), the corners' alphas sorted by std::sort,
+  // against quality.cpp's sorting by minima and maxima; inverted and degenerate quads
+  // included (a4 <= 0: a4 / a1).
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> coordinate(-2.0, 2.0);
+  std::uniform_int_distribution<int> grid(-2, 2);
+  int non_positive = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    std::array<Vec3, 4> p;
+    for (Vec3& v : p) v = trial % 2 ? Vec3{coordinate(rng), coordinate(rng), 0} : Vec3{double(grid(rng)), double(grid(rng)), 0};
+    std::array<double, 4> alpha;
+    for (int i = 0; i < 4; ++i) {
+      const Vec3 &prev = p[(i + 3) % 4], &here = p[i], &next = p[(i + 1) % 4];
+      const double squares = dot(next - here, next - here) + dot(prev - here, prev - here) + dot(next - prev, next - prev);
+      const double twice_area = dot(cross(next - here, prev - here), kUp);
+      alpha[i] = squares > 0 ? std::sqrt(3.0) * twice_area / squares : 0.0;
+    }
+    std::sort(alpha.begin(), alpha.end(), [](double a, double b) { return a > b; });
+    double expected;
+    if (alpha[3] <= 0) {
+      expected = alpha[0] > 0 ? std::max(-1.0, alpha[3] / alpha[0]) : -1.0;
+      ++non_positive;
+    } else {
+      expected = alpha[2] * alpha[3] / (alpha[0] * alpha[1]);
+    }
+    ASSERT_NEAR(lee_lo_quality(p, kUp), expected, 1e-12) << trial;
+  }
+  EXPECT_GT(non_positive, 1000);
 }
 
 TEST(Quality, RectanglesScoreOne) {

@@ -39,6 +39,12 @@ struct QuadCorners {
 };
 QuadCorners quad_corners(const std::array<Vec3, 4>& quad, const std::array<Vec3, 4>& unit_normal);
 
+// quad_corners of a quad in the z = 0 plane, every corner signed by +z: only the z
+// components of the cross products are computed. The same values (zeros' signs aside;
+// a test compares the two), for the smoother of planar regions, where quad_corners
+// took a fifth of the boundary route's time on a 1.5 M-quad rectangle.
+QuadCorners planar_quad_corners(const std::array<Vec3, 4>& quad);
+
 struct QualityStats {
   double min = 0, avg = 0, max = 0, std = 0;
 };

@@ -153,9 +153,9 @@ class SurfaceNodes {
 };
 
 // The nodes of a planar mesh in its plane's frame (x, y, 0): each node's mesh
-// coordinates are its position, and the normal is +z everywhere. The same arithmetic
-// as SurfaceNodes given those (the same smoothed mesh, bit for bit) in one array
-// instead of four: on a 1.5 M-quad rectangle (counts 1000, 1100, 1200, 1300) the
+// coordinates are its position, and the normal is +z everywhere. The same values as
+// SurfaceNodes given those (the same smoothed mesh, bit for bit: a test), in one array
+// instead of four, the corners by planar_quad_corners: on a 1.5 M-quad rectangle (counts 1000, 1100, 1200, 1300) the
 // copies cost 110 MB and a fifth of the smoothing's time, most of it the kernel
 // handing out their pages.
 class PlanarNodes {
@@ -178,6 +178,11 @@ class PlanarNodes {
 
   static constexpr Vec3 kUp{0, 0, 1};
 
+  // Whether all nodes share one z, as their corners (planar_quad_corners) assume.
+  static bool in_one_plane(const std::vector<Vec3>& nodes) {
+    return std::all_of(nodes.begin(), nodes.end(), [&](const Vec3& p) { return p.z == nodes.front().z; });
+  }
+
  private:
   std::vector<Vec3>& nodes_;
 };
@@ -188,6 +193,9 @@ QuadCorners corners_of(const Quad& q, const Nodes& nodes) {
   return quad_corners({nodes.position(q[0]), nodes.position(q[1]), nodes.position(q[2]), nodes.position(q[3])},
                       {nodes.unit_normal(q[0]), nodes.unit_normal(q[1]), nodes.unit_normal(q[2]),
                        nodes.unit_normal(q[3])});
+}
+QuadCorners corners_of(const Quad& q, const PlanarNodes& nodes) {
+  return planar_quad_corners({nodes.position(q[0]), nodes.position(q[1]), nodes.position(q[2]), nodes.position(q[3])});
 }
 
 // Positions and normals (any length) read where they are, each unit normal computed
@@ -648,7 +656,7 @@ SmoothingResult smooth_in_frame(std::vector<Quad>& quads, int fixed, std::vector
   merged = 0;
   if (fixed >= static_cast<int>(nodes.size())) return {};
   PlanarNodes planar(nodes);
-  if (!has_doublet(quads, fixed, nodes.size())) {
+  if (PlanarNodes::in_one_plane(nodes) && !has_doublet(quads, fixed, nodes.size())) {
     CornerScan scan = scan_corners(quads, fixed, planar, options.good_enough);
     if (scan.inverted == 0) return Smoother<PlanarNodes>(quads, fixed, planar).run(options, std::move(scan.deciding));
   }
