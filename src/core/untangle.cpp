@@ -169,15 +169,40 @@ class Untangler {
   }
 
   // Worst corner whose angle depends on node n: at n and at its two neighbours in
-  // each quad around it.
-  double worst_corner_near(NodeId n) const {
-    double worst = 1.0;
-    for (int k = quads_of_.offsets[n]; k < quads_of_.offsets[n + 1]; ++k) {
-      const Quad& q = mesh_.quads[quads_of_.items[k]];
+  // each quad around it; or, as soon as one is at or below `stop_at`, that one. A try
+  // that cannot beat the best so far is rejected at its first such corner, which is
+  // looked at first in the next try (`first`: its quad in n's list and corner):
+  // the repair's time on U_Joint_2.stp at D/25 0.20 -> 0.11 s (the same moves).
+  struct CornerNear {
+    int quad = 0, corner = 0;
+  };
+  double worst_corner_near(NodeId n, double stop_at, CornerNear& first) const {
+    const int begin = quads_of_.offsets[n], count = quads_of_.offsets[n + 1] - begin;
+    const auto corner = [&](CornerNear c) {
+      const Quad& q = mesh_.quads[quads_of_.items[begin + c.quad]];
       const int i = static_cast<int>(std::find(q.begin(), q.end(), n) - q.begin());
-      for (int j : {i, (i + 1) % 4, (i + 3) % 4}) worst = std::min(worst, corner_quality(q, j));
+      return corner_quality(q, c.corner == 0 ? i : c.corner == 1 ? (i + 1) % 4 : (i + 3) % 4);
+    };
+    double worst = 1.0;
+    if (first.quad >= 0 && first.quad < count) {
+      worst = std::min(worst, corner(first));
+      if (worst <= stop_at) return worst;
+    }
+    for (int k = 0; k < count; ++k) {
+      for (int j = 0; j < 3; ++j) {
+        if (k == first.quad && j == first.corner) continue;
+        worst = std::min(worst, corner({k, j}));
+        if (worst <= stop_at) {
+          first = {k, j};
+          return worst;
+        }
+      }
     }
     return worst;
+  }
+  double worst_corner_near(NodeId n) const {
+    CornerNear none{-1, -1};
+    return worst_corner_near(n, -INFINITY, none);
   }
 
   void improve_node(NodeId n) {
@@ -191,6 +216,7 @@ class Untangler {
     e1 = (1.0 / norm(e1)) * e1;
     const Vec3 e2 = cross(normal, e1);
     double best = worst_corner_near(n);
+    CornerNear first;
     for (double step = 0.25 * shortest; step > 1e-3 * shortest; step *= 0.5) {
       bool moved = true;
       for (int tries = 0; moved && tries < 4; ++tries) {
@@ -199,7 +225,7 @@ class Untangler {
         Vec3 best_position = start;
         for (int d = 0; d < 8; ++d) {
           mesh_.nodes[n] = start + step * (kCompassDirections.cos[d] * e1 + kCompassDirections.sin[d] * e2);
-          const double value = worst_corner_near(n);
+          const double value = worst_corner_near(n, best + 1e-12, first);
           if (value > best + 1e-12) { best = value; best_position = mesh_.nodes[n]; moved = true; }
         }
         mesh_.nodes[n] = best_position;
