@@ -24,7 +24,7 @@ struct Side {
 }  // namespace
 
 int balance_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& segments,
-                           const std::vector<std::vector<int>>& chains) {
+                           const std::vector<std::vector<int>>& chains, EdgeSpacings* kept) {
   std::vector<int> chain_of(index.edge_count(), -1);
   for (std::size_t c = 0; c < chains.size(); ++c) for (int e : chains[c]) chain_of[e] = static_cast<int>(c);
   // Only a face with two or more one-segment edges can be such a band; its corners
@@ -45,7 +45,7 @@ int balance_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshe
     }
   }
   std::vector<Vec3> nodes;
-  const std::vector<EdgeNodes> edges = discretize_edges(index, provisional, nodes);
+  const std::vector<EdgeNodes> edges = discretize_edges(index, provisional, nodes, kept);
   int balanced = 0;
   for (int f : candidates) {
     FaceBoundary b;

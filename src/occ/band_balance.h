@@ -11,13 +11,15 @@
 
 #include <vector>
 
+#include "occ/edge_discretization.h"
 #include "occ/shape_index.h"
 
 namespace tquad {
 
 // segments: per edge, changed in place; chains: edges kept equal. Returns the number
 // of faces balanced.
+// kept: spacings to take and keep (discretize_edges), or none.
 int balance_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& segments,
-                           const std::vector<std::vector<int>>& chains);
+                           const std::vector<std::vector<int>>& chains, EdgeSpacings* kept = nullptr);
 
 }  // namespace tquad

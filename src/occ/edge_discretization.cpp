@@ -117,10 +117,35 @@ std::vector<int> edge_segment_counts(const ShapeIndex& index, double size, const
   return segments;
 }
 
+namespace {
+
+// Edge e's nodes at n > 0 segments by arc length along its 3D curve.
+EdgeSpacing arc_length_spacing(const TopoDS_Edge& edge, int e, int n) {
+  double u0 = 0, u1 = 0;
+  BRep_Tool::Range(edge, u0, u1);
+  const BRepAdaptor_Curve curve(edge);
+  EdgeSpacing out;
+  out.segments = n;
+  out.params.push_back(u0);
+  if (n > 1) {
+    GCPnts_UniformAbscissa spacing(curve, n + 1, u0, u1);
+    if (!spacing.IsDone() || spacing.NbPoints() != n + 1) {
+      throw InputError("edge " + std::to_string(e) + ": its arc-length discretization failed (a damaged curve?)");
+    }
+    for (int i = 2; i <= n; ++i) out.params.push_back(spacing.Parameter(i));
+  }
+  out.params.push_back(u1);
+  for (int i = 1; i < n; ++i) out.inner_points.push_back(to_vec3(curve.Value(out.params[i])));
+  return out;
+}
+
+}  // namespace
+
 std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vector<int>& segments,
-                                        std::vector<Vec3>& nodes) {
+                                        std::vector<Vec3>& nodes, EdgeSpacings* kept) {
   nodes.clear();
   for (int v = 0; v < index.vertex_count(); ++v) nodes.push_back(to_vec3(BRep_Tool::Pnt(index.vertex(v))));
+  if (kept) kept->resize(index.edge_count());
 
   std::vector<EdgeNodes> result(index.edge_count());
   for (int e = 0; e < index.edge_count(); ++e) {
@@ -128,9 +153,9 @@ std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vect
     TopoDS_Vertex first, last;
     TopExp::Vertices(edge, first, last);
     EdgeNodes& out = result[e];
-    double u0 = 0, u1 = 0;
-    BRep_Tool::Range(edge, u0, u1);
     if (BRep_Tool::Degenerated(edge)) {
+      double u0 = 0, u1 = 0;
+      BRep_Tool::Range(edge, u0, u1);
       out.degenerate = true;
       out.params = {u0, u1};
       out.nodes = {index.vertex_index(first), index.vertex_index(last)};
@@ -138,20 +163,17 @@ std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vect
     }
     const int n = segments[e];
     if (n <= 0) continue;
-    const BRepAdaptor_Curve curve(edge);
-    out.params.push_back(u0);
-    if (n > 1) {
-      GCPnts_UniformAbscissa spacing(curve, n + 1, u0, u1);
-      if (!spacing.IsDone() || spacing.NbPoints() != n + 1) {
-        throw InputError("edge " + std::to_string(e) + ": its arc-length discretization failed (a damaged curve?)");
-      }
-      for (int i = 2; i <= n; ++i) out.params.push_back(spacing.Parameter(i));
+    EdgeSpacing computed;
+    if (!kept || (*kept)[e].segments != n) {
+      computed = arc_length_spacing(edge, e, n);
+      if (kept) (*kept)[e] = computed;
     }
-    out.params.push_back(u1);
+    const EdgeSpacing& spacing = kept ? (*kept)[e] : computed;
+    out.params = spacing.params;
     out.nodes.push_back(index.vertex_index(first));
-    for (int i = 1; i < n; ++i) {
+    for (const Vec3& p : spacing.inner_points) {
       out.nodes.push_back(static_cast<NodeId>(nodes.size()));
-      nodes.push_back(to_vec3(curve.Value(out.params[i])));
+      nodes.push_back(p);
     }
     out.nodes.push_back(index.vertex_index(last));
   }

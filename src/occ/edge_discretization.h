@@ -37,9 +37,23 @@ std::vector<int> edge_segment_counts(const ShapeIndex& index, double size,
 std::vector<int> edge_segment_counts(const ShapeIndex& index, double size, const std::vector<int>& turn_minimums,
                                      std::vector<double>& lengths, const std::vector<char>& usable = {});
 
+// An edge's nodes at one count: curve parameters (its ends included) and the inner
+// points.
+struct EdgeSpacing {
+  int segments = 0;  // 0: none yet
+  std::vector<double> params;
+  std::vector<Vec3> inner_points;
+};
+// Per edge, the spacing last computed, kept for the next discretization: the interval
+// assignment's provisional one (band_balance.h) and each refinement round ask again
+// for mostly the same counts, and the arc-length spacing is the costly part.
+using EdgeSpacings = std::vector<EdgeSpacing>;
+
 // Places the nodes: vertices (nodes 0 .. vertex_count-1), then the inner nodes of each
 // edge with segments[e] > 0 (edges of unmeshed faces can be given 0 and are skipped).
+// With `kept`, an edge whose count is the one kept takes its spacing from there
+// (the same numbers), and the others' are kept for next time.
 std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vector<int>& segments,
-                                        std::vector<Vec3>& nodes);
+                                        std::vector<Vec3>& nodes, EdgeSpacings* kept = nullptr);
 
 }  // namespace tquad

@@ -141,7 +141,7 @@ void raise_three_edge_face_floors(const ShapeIndex& index, const std::vector<cha
 
 IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector<char>& meshed,
                                       const std::vector<double>& lengths, double size, std::vector<int>& segments,
-                                      const std::vector<int>& floor) {
+                                      const std::vector<int>& floor, EdgeSpacings* kept) {
   const int edges = index.edge_count();
   const std::vector<int> before = segments;
   const std::vector<int> floors = floor.empty() ? std::vector<int>(edges, 1) : floor;
@@ -177,7 +177,7 @@ IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector
   std::vector<double> goals(edges, 1.0);
   for (int e = 0; e < edges; ++e) if (segments[e] > 0) goals[e] = goal(e);
   report.balanced_rings = balance_rings(index, meshed, goals, floors, segments, chains);
-  report.balanced_bands = balance_narrow_bands(index, meshed, segments, chains);
+  report.balanced_bands = balance_narrow_bands(index, meshed, segments, chains, kept);
   // Faces left odd are made even by changing whole chains (which keeps their faces
   // mapped) or single edges.
   make_faces_even(index, meshed, lengths, size, segments, floor, chains);

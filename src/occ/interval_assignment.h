@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "occ/edge_discretization.h"
 #include "occ/shape_index.h"
 
 namespace tquad {
@@ -66,8 +67,10 @@ struct IntervalReport {
   int quartered_pole_rims = 0;          // disks around a pole given a multiple of 4 (pole_rims.h)
 };
 
+// `kept`: edge spacings the narrow bands' provisional discretization takes and keeps
+// (discretize_edges), or none.
 IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector<char>& meshed,
                                       const std::vector<double>& lengths, double size, std::vector<int>& segments,
-                                      const std::vector<int>& floor);
+                                      const std::vector<int>& floor, EdgeSpacings* kept = nullptr);
 
 }  // namespace tquad

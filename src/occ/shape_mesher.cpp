@@ -263,7 +263,8 @@ class ShapeMeshContext {
     // No change goes below the curvature and three-edge-face bounds or a refinement.
     std::vector<int> floor = edge_floor_;
     for (int e = 0; e < index_.edge_count(); ++e) floor[e] = std::max(floor[e], minimum_[e]);
-    const IntervalReport intervals = assign_shape_intervals(index_, to_mesh_, lengths_, result_.size, segments_, floor);
+    const IntervalReport intervals =
+        assign_shape_intervals(index_, to_mesh_, lengths_, result_.size, segments_, floor, &spacings_);
     result_.changes = intervals.changes;
     result_.interval_chains = intervals.chains;
     result_.chained_edges = intervals.chained_edges;
@@ -308,7 +309,7 @@ class ShapeMeshContext {
     previous_edges_ = std::move(edges_);
     previous_nodes_ = std::move(result_.mesh.nodes);
     result_.mesh.nodes.clear();
-    edges_ = discretize_edges(index_, segments_, result_.mesh.nodes);
+    edges_ = discretize_edges(index_, segments_, result_.mesh.nodes, &spacings_);
     if (first) check_requested_corners(index_, meshed_, options_.corners, edges_, result_.mesh.nodes);
   }
 
@@ -430,6 +431,7 @@ class ShapeMeshContext {
   std::vector<char> to_mesh_;           // meshed_ without the damaged faces
   std::vector<EdgeNodes> edges_;
   std::vector<EdgeNodes> previous_edges_;  // the last round's, while meshing the next
+  EdgeSpacings spacings_;                  // each edge's last spacing, for the next rounds
   std::vector<Vec3> previous_nodes_;
   std::vector<FaceOutcome> outcomes_;
   std::vector<NodeId> new_node_id_;  // assemble's renumbering: edges_' ids -> the mesh's (-1: dropped)
