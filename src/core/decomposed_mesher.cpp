@@ -46,7 +46,7 @@ std::vector<int> add_cut_nodes(const PlanarDomain& domain, const std::vector<int
 }  // namespace
 
 QuadMesh mesh_decomposed_domain(const PlanarDomain& domain, const FaceDecomposition& d,
-                                const std::vector<int>& cut_counts, const MeshOptions& options) {
+                                const std::vector<int>& cut_counts, const MeshOptions& options, PatchMeshMemo* memo) {
   if (cut_counts.size() != d.cuts.size()) {
     throw std::logic_error("decomposition has " + std::to_string(d.cuts.size()) + " cuts but " +
                            std::to_string(cut_counts.size()) + " counts");
@@ -73,7 +73,7 @@ QuadMesh mesh_decomposed_domain(const PlanarDomain& domain, const FaceDecomposit
     }
     std::string tree;
     try {
-      tree = append_patch(mesh, loop, corners, options);
+      tree = append_patch(mesh, loop, corners, options, memo);
     } catch (const InputError& e) {
       throw InputError("patch " + std::to_string(p) + " of the decomposition: " + e.what());
     }

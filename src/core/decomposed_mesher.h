@@ -10,6 +10,7 @@
 
 #include "core/face_decomposition.h"
 #include "core/mesher.h"
+#include "core/patch_memo.h"
 
 namespace tquad {
 
@@ -17,8 +18,10 @@ namespace tquad {
 // points (bit-exact), then the cuts' inner nodes, then the patches' interior nodes.
 // Quads are counter-clockwise. The template tree reads "D<patches>[tree,tree,...]".
 // Satisfies nodes = 1 + quads + boundary_edges / 2 - holes.
+// `memo`: patches meshed before by another decomposition of the same domain.
 QuadMesh mesh_decomposed_domain(const PlanarDomain& domain, const FaceDecomposition& decomposition,
-                                const std::vector<int>& cut_counts, const MeshOptions& options);
+                                const std::vector<int>& cut_counts, const MeshOptions& options,
+                                PatchMeshMemo* memo = nullptr);
 
 // Rings the holes (hole_rings.h), decomposes the rest, assigns the cut counts from
 // the target edge length `size`, and meshes.

@@ -24,6 +24,12 @@ struct MeshOptions {
   bool untangle = true;
 };
 
+// Every field equal (a field added above belongs here too).
+inline bool operator==(const MeshOptions& a, const MeshOptions& b) {
+  return a.t4_ratio == b.t4_ratio && a.t5_cut_edges == b.t5_cut_edges && a.max_quads == b.max_quads &&
+         a.untangle == b.untangle;
+}
+
 // Throws InputError (bad input, message names the point, segment or curve) or
 // std::logic_error (an internal inconsistency; never expected).
 QuadMesh mesh_boundary(const BoundaryLoop& loop, const MeshOptions& options = {});

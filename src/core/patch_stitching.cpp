@@ -3,11 +3,13 @@
 namespace tquad {
 
 std::string append_patch(QuadMesh& mesh, const std::vector<NodeId>& loop, const std::vector<int>& corners,
-                         const MeshOptions& options) {
+                         const MeshOptions& options, PatchMeshMemo* memo) {
   BoundaryLoop region;
   region.corners = corners;
   for (NodeId id : loop) region.points.push_back(mesh.nodes[id]);
-  const QuadMesh patch = mesh_boundary(region, options);
+  QuadMesh own;
+  if (!memo) own = mesh_boundary(region, options);
+  const QuadMesh& patch = memo ? memo->mesh(region, options) : own;
   const NodeId base = static_cast<NodeId>(mesh.nodes.size());
   const int m = static_cast<int>(loop.size());
   mesh.nodes.insert(mesh.nodes.end(), patch.nodes.begin() + m, patch.nodes.end());

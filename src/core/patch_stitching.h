@@ -7,12 +7,14 @@
 #include <vector>
 
 #include "core/mesher.h"
+#include "core/patch_memo.h"
 
 namespace tquad {
 
 // `loop` walks the region's boundary (node ids of `mesh`, each once); `corners` are
 // positions in it. Returns the patch's template tree. Throws as mesh_boundary does.
+// With `memo`, a patch meshed before (the same points and corners) is not meshed again.
 std::string append_patch(QuadMesh& mesh, const std::vector<NodeId>& loop, const std::vector<int>& corners,
-                         const MeshOptions& options);
+                         const MeshOptions& options, PatchMeshMemo* memo = nullptr);
 
 }  // namespace tquad

@@ -87,13 +87,16 @@ class FaceChart {
   const PlanarDomain& domain() const { return ringed_.inner; }
   const std::string& name() const { return name_; }
 
-  // The mesh of a decomposition of the domain, placed on the surface and checked.
-  FaceMeshResult mesh(const FaceDecomposition& decomposition, double edge_size, const MeshOptions& options) const {
+  // The mesh of a decomposition of the domain, placed on the surface and checked;
+  // `memo`: the patches of other decompositions already meshed.
+  FaceMeshResult mesh(const FaceDecomposition& decomposition, double edge_size, const MeshOptions& options,
+                      PatchMeshMemo* memo = nullptr) const {
     const auto start = std::chrono::steady_clock::now();
     const PlanarDomain& inner = ringed_.inner;
     return place(join_rings(domain_, ringed_,
                             mesh_decomposed_domain(inner, decomposition,
-                                                   assign_cut_intervals(inner, decomposition, edge_size), options)),
+                                                   assign_cut_intervals(inner, decomposition, edge_size), options,
+                                                   memo)),
                  start);
   }
 
@@ -161,12 +164,12 @@ class FaceChart {
 // The face meshed on its decomposition with corner ears cleared; nothing when that
 // changes no piece (the same decomposition as the plain one).
 std::optional<FaceMeshResult> mesh_with_corner_ears_cleared(const FaceChart& chart, double edge_size,
-                                                           const MeshOptions& options) {
+                                                           const MeshOptions& options, PatchMeshMemo& memo) {
   DecompositionOptions cleared;
   cleared.clear_corner_ears = true;
   const FaceDecomposition decomposition = decompose_domain(chart.domain(), cleared);
   if (decomposition.corner_splits == 0) return std::nullopt;
-  return chart.mesh(decomposition, edge_size, options);
+  return chart.mesh(decomposition, edge_size, options, &memo);
 }
 
 }  // namespace
@@ -176,19 +179,20 @@ FaceMeshResult mesh_face_decomposed(const TopoDS_Face& face, int face_index, con
                                     const MeshOptions& options) {
   const FaceChart chart(face, face_index, b, nodes, vertex_nodes);
   std::optional<FaceMeshResult> best;
+  PatchMeshMemo patches;  // the two decompositions differ only near corners
   try {
-    best = chart.mesh(decompose_domain(chart.domain()), edge_size, options);
+    best = chart.mesh(decompose_domain(chart.domain()), edge_size, options, &patches);
   } catch (const InputError& e) {
     // The decomposition with its corner ears cleared below may still mesh the face.
     try {
-      return mesh_with_corner_ears_cleared(chart, edge_size, options).value();
+      return mesh_with_corner_ears_cleared(chart, edge_size, options, patches).value();
     } catch (const std::exception&) {
     }
     throw InputError(chart.name() + " (decomposed into patches): " + e.what());
   }
   try {
     // Either may be the better (DecompositionOptions::clear_corner_ears).
-    if (auto cleared = mesh_with_corner_ears_cleared(chart, edge_size, options); cleared && better_face_mesh(*cleared, *best)) {
+    if (auto cleared = mesh_with_corner_ears_cleared(chart, edge_size, options, patches); cleared && better_face_mesh(*cleared, *best)) {
       best = std::move(cleared);
     }
   } catch (const std::exception&) {  // the plain decomposition's mesh stays, as in face_route
@@ -223,11 +227,12 @@ FaceMeshResult mesh_face_o_grid(const TopoDS_Face& face, int face_index, const F
   const int rim = chart.domain().loop_count() == 2 ? static_cast<int>(chart.domain().loops[1].points.size()) : 0;
   std::optional<FaceMeshResult> best;
   std::string problem = "no pair of cuts from the hole to the outer loop stays inside the face";
+  PatchMeshMemo halves_meshed;  // places t and t + kPlaces / 2 give the same halves
   for (int t = 0; t < std::min(kPlaces, rim); ++t) {
     const std::optional<FaceDecomposition> halves = o_grid_decomposition(chart.domain(), t * rim / std::min(kPlaces, rim));
     if (!halves) continue;
     try {
-      FaceMeshResult r = chart.mesh(*halves, edge_size, options);
+      FaceMeshResult r = chart.mesh(*halves, edge_size, options, &halves_meshed);
       if (!best || better_face_mesh(r, *best)) best = std::move(r);
     } catch (const std::exception& e) {  // the other places are still tried
       problem = e.what();

@@ -178,29 +178,12 @@ Vec3 outer_normal(const BRepAdaptor_Surface& surface, bool reversed, const Vec3&
   return to_vec3(n);
 }
 
-void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
-                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
-                      FaceMeshResult& out) {
-  const BRepAdaptor_Surface surface(face);
-  const bool reversed = face.Orientation() == TopAbs_REVERSED;
-  std::vector<Vec3> normals;
-  if (surface.GetType() == GeomAbs_Plane && !param.empty()) {
-    // A plane's derivatives are its axes at every (u, v): one normal for all nodes
-    // (the same bits as evaluating it at each; most CAD faces are planes).
-    normals.assign(param.size(), outer_normal(surface, reversed, polar ? polar_to_uv(*polar, param[0]) : param[0]));
-  } else {
-    normals.resize(param.size());
-    for (std::size_t i = 0; i < param.size(); ++i) {
-      normals[i] = outer_normal(surface, reversed, polar ? polar_to_uv(*polar, param[i]) : param[i]);
-    }
-  }
-  check_on_surface(face, param, polar, xyz, std::move(normals), out);
-}
+namespace {
 
-void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
-                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
-                      std::vector<Vec3> normals, FaceMeshResult& out) {
-  const BRepAdaptor_Surface surface(face);
+// check_on_surface with the face's surface adaptor given.
+void check_on_surface_of(const TopoDS_Face& face, const BRepAdaptor_Surface& surface, const std::vector<Vec3>& param,
+                         const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
+                         std::vector<Vec3> normals, FaceMeshResult& out) {
   const bool reversed = face.Orientation() == TopAbs_REVERSED;
   const auto to_uv = [&](const Vec3& p) { return polar ? polar_to_uv(*polar, p) : p; };
   const bool planar = surface.GetType() == GeomAbs_Plane;
@@ -254,6 +237,35 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
   out.off_surface = off_surface;
   out.worst_corner = worst;
   out.normal = std::move(normals);
+}
+
+}  // namespace
+
+void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
+                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
+                      FaceMeshResult& out) {
+  // One surface adaptor for the normals and the check: each costs the face's (u, v)
+  // bounds (a pass over every pcurve).
+  const BRepAdaptor_Surface surface(face);
+  const bool reversed = face.Orientation() == TopAbs_REVERSED;
+  std::vector<Vec3> normals;
+  if (surface.GetType() == GeomAbs_Plane && !param.empty()) {
+    // A plane's derivatives are its axes at every (u, v): one normal for all nodes
+    // (the same bits as evaluating it at each; most CAD faces are planes).
+    normals.assign(param.size(), outer_normal(surface, reversed, polar ? polar_to_uv(*polar, param[0]) : param[0]));
+  } else {
+    normals.resize(param.size());
+    for (std::size_t i = 0; i < param.size(); ++i) {
+      normals[i] = outer_normal(surface, reversed, polar ? polar_to_uv(*polar, param[i]) : param[i]);
+    }
+  }
+  check_on_surface_of(face, surface, param, polar, xyz, std::move(normals), out);
+}
+
+void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
+                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
+                      std::vector<Vec3> normals, FaceMeshResult& out) {
+  check_on_surface_of(face, BRepAdaptor_Surface(face), param, polar, xyz, std::move(normals), out);
 }
 
 bool better_face_mesh(const FaceMeshResult& a, const FaceMeshResult& b) {

@@ -1,0 +1,26 @@
+#include "core/patch_memo.h"
+
+#include <cstring>
+
+namespace tquad {
+
+namespace {
+
+bool same_points(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0);
+}
+
+}  // namespace
+
+const QuadMesh& PatchMeshMemo::mesh(const BoundaryLoop& loop, const MeshOptions& options) {
+  for (const Entry& e : entries_) {
+    if (e.loop.corners == loop.corners && same_points(e.loop.points, loop.points) && e.options == options) {
+      return e.mesh;
+    }
+  }
+  QuadMesh mesh = mesh_boundary(loop, options);
+  entries_.push_back({loop, options, std::move(mesh)});
+  return entries_.back().mesh;
+}
+
+}  // namespace tquad
