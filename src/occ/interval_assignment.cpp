@@ -20,23 +20,6 @@
 
 namespace tquad {
 
-std::optional<std::vector<std::vector<int>>> face_wire_edges(const ShapeIndex& index, int face) {
-  const TopoDS_Face& f = index.face(face);
-  std::vector<std::vector<int>> wires;
-  const TopoDS_Wire outer = BRepTools::OuterWire(f);
-  for (TopExp_Explorer w(f, TopAbs_WIRE); w.More(); w.Next()) {
-    const TopoDS_Wire wire = TopoDS::Wire(w.Current());
-    std::vector<int> edges;
-    for (BRepTools_WireExplorer it(wire, f); it.More(); it.Next()) {
-      if (BRep_Tool::Degenerated(it.Current())) return std::nullopt;
-      edges.push_back(index.edge_index(it.Current()));
-    }
-    if (wire.IsSame(outer)) wires.insert(wires.begin(), std::move(edges));
-    else wires.push_back(std::move(edges));
-  }
-  return wires;
-}
-
 int face_boundary_total(const ShapeIndex& index, int face, const std::vector<int>& segments) {
   int total = 0;
   // The explorer meets a seam edge twice, once per orientation, as the face's
@@ -117,8 +100,8 @@ namespace {
 // Edges whose counts a mapped mesh of the face wants equal: the opposite edges of a
 // face bounded by four edges, and the outer and inner edge of a ring (a face of two
 // wires of one edge each: an annulus meshed as a mapped ring, T0 between its cuts).
-void opposite_edge_pairs(const ShapeIndex& index, int face, std::vector<std::pair<int, int>>& pairs) {
-  const auto wires = face_wire_edges(index, face);
+void opposite_edge_pairs(FaceWireEdges& face_wires, int face, std::vector<std::pair<int, int>>& pairs) {
+  const auto& wires = face_wires.of(face);
   if (!wires) return;
   if (wires->size() == 1 && (*wires)[0].size() == 4) {
     const std::vector<int>& edges = (*wires)[0];
@@ -130,10 +113,10 @@ void opposite_edge_pairs(const ShapeIndex& index, int face, std::vector<std::pai
 
 }  // namespace
 
-void raise_three_edge_face_floors(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& floor) {
-  for (int f = 0; f < index.face_count(); ++f) {
+void raise_three_edge_face_floors(FaceWireEdges& face_wires, const std::vector<char>& meshed, std::vector<int>& floor) {
+  for (int f = 0; f < face_wires.index().face_count(); ++f) {
     if (!meshed[f]) continue;
-    const auto wires = face_wire_edges(index, f);
+    const auto& wires = face_wires.of(f);
     if (!wires || wires->size() != 1 || (*wires)[0].size() != 3) continue;
     for (int e : (*wires)[0]) floor[e] = std::max(floor[e], kThreeCurveSideMinimum);
   }
@@ -141,7 +124,8 @@ void raise_three_edge_face_floors(const ShapeIndex& index, const std::vector<cha
 
 IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector<char>& meshed,
                                       const std::vector<double>& lengths, double size, std::vector<int>& segments,
-                                      const std::vector<int>& floor, EdgeSpacings* kept) {
+                                      const std::vector<int>& floor, FaceWireEdges& wires,
+                                      EdgeSpacings* kept) {
   const int edges = index.edge_count();
   const std::vector<int> before = segments;
   const std::vector<int> floors = floor.empty() ? std::vector<int>(edges, 1) : floor;
@@ -152,7 +136,7 @@ IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector
   CurveSets sets(edges);
   for (int e = 0; e < edges; ++e) if (segments[e] > 0) check_goal(goal(e), "edge " + std::to_string(e));
   std::vector<std::pair<int, int>> pairs;
-  for (int f = 0; f < index.face_count(); ++f) if (meshed[f]) opposite_edge_pairs(index, f, pairs);
+  for (int f = 0; f < index.face_count(); ++f) if (meshed[f]) opposite_edge_pairs(wires, f, pairs);
   for (const auto& [a, b] : pairs) {
     if (segments[a] <= 0 || segments[b] <= 0) continue;
     if (near_enough_to_chain(goal(a), goal(b))) sets.join(a, b);
@@ -176,7 +160,7 @@ IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector
   // long sides (band_balance.h).
   std::vector<double> goals(edges, 1.0);
   for (int e = 0; e < edges; ++e) if (segments[e] > 0) goals[e] = goal(e);
-  report.balanced_rings = balance_rings(index, meshed, goals, floors, segments, chains);
+  report.balanced_rings = balance_rings(wires, meshed, goals, floors, segments, chains);
   report.balanced_bands = balance_narrow_bands(index, meshed, segments, chains, kept);
   // Faces left odd are made even by changing whole chains (which keeps their faces
   // mapped) or single edges.

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "occ/edge_discretization.h"
+#include "occ/face_wire_edges.h"
 #include "occ/shape_index.h"
 
 namespace tquad {
@@ -43,13 +44,9 @@ std::vector<IntervalChange> make_faces_even(const ShapeIndex& index, const std::
 // Sum of the edge counts along a face's wires (seams twice, degenerate edges 0).
 int face_boundary_total(const ShapeIndex& index, int face, const std::vector<int>& segments);
 
-// A face's wires as edge lists (the outer wire first), or nothing when an edge is
-// degenerate (a pole).
-std::optional<std::vector<std::vector<int>>> face_wire_edges(const ShapeIndex& index, int face);
-
 // Raises `floor` (per edge) to kThreeCurveSideMinimum on every edge of a meshed face
 // bounded by three edges (one wire, no pole), so such a face is three quads or more.
-void raise_three_edge_face_floors(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& floor);
+void raise_three_edge_face_floors(FaceWireEdges& wires, const std::vector<char>& meshed, std::vector<int>& floor);
 
 // The whole shape's edge counts chosen together: opposite edges of every face bounded
 // by four edges, and the outer and inner circle of a ring face (two wires of one edge
@@ -67,10 +64,11 @@ struct IntervalReport {
   int quartered_pole_rims = 0;          // disks around a pole given a multiple of 4 (pole_rims.h)
 };
 
-// `kept`: edge spacings the narrow bands' provisional discretization takes and keeps
-// (discretize_edges), or none.
+// `wires`: the faces' wires (the same shape as `index`); `kept`: edge spacings the
+// narrow bands' provisional discretization takes and keeps (discretize_edges), or none.
 IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector<char>& meshed,
                                       const std::vector<double>& lengths, double size, std::vector<int>& segments,
-                                      const std::vector<int>& floor, EdgeSpacings* kept = nullptr);
+                                      const std::vector<int>& floor, FaceWireEdges& wires,
+                                      EdgeSpacings* kept = nullptr);
 
 }  // namespace tquad

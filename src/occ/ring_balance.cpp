@@ -21,9 +21,10 @@ int total(const std::vector<int>& edges, const std::vector<int>& segments) {
 
 }  // namespace
 
-int balance_rings(const ShapeIndex& index, const std::vector<char>& meshed, const std::vector<double>& goal,
+int balance_rings(FaceWireEdges& face_wires, const std::vector<char>& meshed, const std::vector<double>& goal,
                   const std::vector<int>& floor, std::vector<int>& segments,
                   const std::vector<std::vector<int>>& chains) {
+  const ShapeIndex& index = face_wires.index();
   // Units: the chains, then each edge not in one.
   std::vector<std::vector<int>> units = chains;
   std::vector<char> chained(index.edge_count(), 0);
@@ -35,7 +36,7 @@ int balance_rings(const ShapeIndex& index, const std::vector<char>& meshed, cons
   int balanced = 0;
   for (int f = 0; f < index.face_count(); ++f) {
     if (!meshed[f]) continue;
-    const auto wires = face_wire_edges(index, f);
+    const auto& wires = face_wires.of(f);
     if (!wires || wires->size() != 2) continue;
     const std::vector<int>& a = (*wires)[0];
     const std::vector<int>& b = (*wires)[1];

@@ -12,13 +12,14 @@
 
 #include <vector>
 
+#include "occ/face_wire_edges.h"
 #include "occ/shape_index.h"
 
 namespace tquad {
 
 // segments: per edge, changed in place; chains: edges kept equal; goal and floor: per
 // edge. Returns the number of rings balanced.
-int balance_rings(const ShapeIndex& index, const std::vector<char>& meshed, const std::vector<double>& goal,
+int balance_rings(FaceWireEdges& wires, const std::vector<char>& meshed, const std::vector<double>& goal,
                   const std::vector<int>& floor, std::vector<int>& segments,
                   const std::vector<std::vector<int>>& chains);
 

@@ -236,7 +236,7 @@ class ShapeMeshContext {
     to_mesh_ = meshed_;
     for (const auto& [f, why] : damaged_) if (f >= 0 && f < index_.face_count()) to_mesh_[f] = 0;
     edge_floor_ = edge_turn_minimums(index_, usable);
-    raise_three_edge_face_floors(index_, to_mesh_, edge_floor_);
+    raise_three_edge_face_floors(wires_, to_mesh_, edge_floor_);
     sized_ = edge_segment_counts(index_, result_.size, edge_floor_, lengths_, usable);
     needed_.assign(index_.edge_count(), 0);
     for (int f = 0; f < index_.face_count(); ++f) {
@@ -264,7 +264,7 @@ class ShapeMeshContext {
     std::vector<int> floor = edge_floor_;
     for (int e = 0; e < index_.edge_count(); ++e) floor[e] = std::max(floor[e], minimum_[e]);
     const IntervalReport intervals =
-        assign_shape_intervals(index_, to_mesh_, lengths_, result_.size, segments_, floor, &spacings_);
+        assign_shape_intervals(index_, to_mesh_, lengths_, result_.size, segments_, floor, wires_, &spacings_);
     result_.changes = intervals.changes;
     result_.interval_chains = intervals.chains;
     result_.chained_edges = intervals.chained_edges;
@@ -432,6 +432,7 @@ class ShapeMeshContext {
   std::vector<EdgeNodes> edges_;
   std::vector<EdgeNodes> previous_edges_;  // the last round's, while meshing the next
   EdgeSpacings spacings_;                  // each edge's last spacing, for the next rounds
+  FaceWireEdges wires_{index_};            // each face's wires, walked once
   std::vector<Vec3> previous_nodes_;
   std::vector<FaceOutcome> outcomes_;
   std::vector<NodeId> new_node_id_;  // assemble's renumbering: edges_' ids -> the mesh's (-1: dropped)

@@ -1,0 +1,37 @@
+#include "occ/face_wire_edges.h"
+
+#include <BRepTools.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <BRep_Tool.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Wire.hxx>
+
+namespace tquad {
+
+std::optional<WireEdges> face_wire_edges(const ShapeIndex& index, int face) {
+  const TopoDS_Face& f = index.face(face);
+  std::vector<std::vector<int>> wires;
+  const TopoDS_Wire outer = BRepTools::OuterWire(f);
+  for (TopExp_Explorer w(f, TopAbs_WIRE); w.More(); w.Next()) {
+    const TopoDS_Wire wire = TopoDS::Wire(w.Current());
+    std::vector<int> edges;
+    for (BRepTools_WireExplorer it(wire, f); it.More(); it.Next()) {
+      if (BRep_Tool::Degenerated(it.Current())) return std::nullopt;
+      edges.push_back(index.edge_index(it.Current()));
+    }
+    if (wire.IsSame(outer)) wires.insert(wires.begin(), std::move(edges));
+    else wires.push_back(std::move(edges));
+  }
+  return wires;
+}
+
+const std::optional<WireEdges>& FaceWireEdges::of(int face) {
+  if (!known_[face]) {
+    wires_[face] = face_wire_edges(index_, face);
+    known_[face] = 1;
+  }
+  return wires_[face];
+}
+
+}  // namespace tquad
