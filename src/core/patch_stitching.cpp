@@ -7,9 +7,8 @@ std::string append_patch(QuadMesh& mesh, const std::vector<NodeId>& loop, const 
   BoundaryLoop region;
   region.corners = corners;
   for (NodeId id : loop) region.points.push_back(mesh.nodes[id]);
-  QuadMesh own;
-  if (!memo) own = mesh_boundary(region, options);
-  const QuadMesh& patch = memo ? memo->mesh(region, options) : own;
+  PatchMeshMemo this_patch_only;
+  const QuadMesh& patch = (memo ? *memo : this_patch_only).mesh(region, options);
   const NodeId base = static_cast<NodeId>(mesh.nodes.size());
   const int m = static_cast<int>(loop.size());
   mesh.nodes.insert(mesh.nodes.end(), patch.nodes.begin() + m, patch.nodes.end());

@@ -154,10 +154,10 @@ class SurfaceNodes {
 
 // The nodes of a planar mesh in its plane's frame (x, y, 0): each node's mesh
 // coordinates are its position, and the normal is +z everywhere. The same values as
-// SurfaceNodes given those (the same smoothed mesh, bit for bit: a test), in one array
-// instead of four, the corners by planar_quad_corners: on a 1.5 M-quad rectangle (counts 1000, 1100, 1200, 1300) the
-// copies cost 110 MB and a fifth of the smoothing's time, most of it the kernel
-// handing out their pages.
+// SurfaceNodes given those (the same smoothed mesh, bit for bit: a test), corners by
+// planar_quad_corners, in one array instead of four: on a 1.5 M-quad rectangle
+// (counts 1000, 1100, 1200, 1300) the copies cost 110 MB and a fifth of the
+// smoothing's time, most of it the kernel handing out their pages.
 class PlanarNodes {
  public:
   explicit PlanarNodes(std::vector<Vec3>& nodes) : nodes_(nodes) {}

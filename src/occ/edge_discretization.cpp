@@ -163,12 +163,9 @@ std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vect
     }
     const int n = segments[e];
     if (n <= 0) continue;
-    EdgeSpacing computed;
-    if (!kept || (*kept)[e].segments != n) {
-      computed = arc_length_spacing(edge, e, n);
-      if (kept) (*kept)[e] = computed;
-    }
-    const EdgeSpacing& spacing = kept ? (*kept)[e] : computed;
+    EdgeSpacing own;  // without `kept`: computed for this call alone
+    EdgeSpacing& spacing = kept ? (*kept)[e] : own;
+    if (spacing.segments != n) spacing = arc_length_spacing(edge, e, n);
     out.params = spacing.params;
     out.nodes.push_back(index.vertex_index(first));
     for (const Vec3& p : spacing.inner_points) {

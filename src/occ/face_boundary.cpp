@@ -319,7 +319,7 @@ FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::v
   // this one's start tangent, signed by the face normal there.
   const int count = static_cast<int>(occurrences.size());
   // One surface adaptor for the face: each costs the face's (u, v) bounds, every
-  // pcurve's, and one per corner was a fifth of a U_Joint_2.stp run's main thread
+  // pcurve's, and one per corner was an eighth of a U_Joint_2.stp run's main thread
   // (callgrind, D/25, before the faces are meshed).
   const BRepAdaptor_Surface surface(face);
   for (int k = 0; k < count; ++k) {

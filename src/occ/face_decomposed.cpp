@@ -123,7 +123,7 @@ class FaceChart {
     xyz.reserve(mesh.nodes.size());
     for (NodeId id : boundary_nodes_) xyz.push_back(nodes_[id]);
     xyz.insert(xyz.end(), out.interior.begin(), out.interior.end());
-    check_on_surface(face_, uv, std::nullopt, xyz, out);
+    check_on_surface(face_, surface_, uv, std::nullopt, xyz, out);
     return out;
   }
 

@@ -85,7 +85,7 @@ FaceMeshResult place_parameter_mesh(const TopoDS_Face& face, const FaceBoundary&
     out.interior.push_back(to_vec3(surface.Value(uv.x, uv.y)));
   }
   out.placement_seconds = seconds_since(placing);
-  check_on_surface(face, uv_mesh.nodes, b.polar, local_positions(b, nodes, out.interior), out);
+  check_on_surface(face, surface, uv_mesh.nodes, b.polar, local_positions(b, nodes, out.interior), out);
   return out;
 }
 
@@ -156,7 +156,7 @@ FaceMeshResult mesh_in_space(const TopoDS_Face& face, const FaceBoundary& b, con
     if (!placed[i]) place(static_cast<NodeId>(i), 0);
   }
   out.placement_seconds = seconds_since(placing);
-  check_on_surface(face, uv, std::nullopt, local_positions(b, nodes, out.interior), out);
+  check_on_surface(face, surface, uv, std::nullopt, local_positions(b, nodes, out.interior), out);
   return out;
 }
 
@@ -178,12 +178,9 @@ Vec3 outer_normal(const BRepAdaptor_Surface& surface, bool reversed, const Vec3&
   return to_vec3(n);
 }
 
-namespace {
-
-// check_on_surface with the face's surface adaptor given.
-void check_on_surface_of(const TopoDS_Face& face, const BRepAdaptor_Surface& surface, const std::vector<Vec3>& param,
-                         const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
-                         std::vector<Vec3> normals, FaceMeshResult& out) {
+void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surface, const std::vector<Vec3>& param,
+                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz, std::vector<Vec3> normals,
+                      FaceMeshResult& out) {
   const bool reversed = face.Orientation() == TopAbs_REVERSED;
   const auto to_uv = [&](const Vec3& p) { return polar ? polar_to_uv(*polar, p) : p; };
   const bool planar = surface.GetType() == GeomAbs_Plane;
@@ -239,14 +236,8 @@ void check_on_surface_of(const TopoDS_Face& face, const BRepAdaptor_Surface& sur
   out.normal = std::move(normals);
 }
 
-}  // namespace
-
-void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
-                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
-                      FaceMeshResult& out) {
-  // One surface adaptor for the normals and the check: each costs the face's (u, v)
-  // bounds (a pass over every pcurve).
-  const BRepAdaptor_Surface surface(face);
+void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surface, const std::vector<Vec3>& param,
+                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz, FaceMeshResult& out) {
   const bool reversed = face.Orientation() == TopAbs_REVERSED;
   std::vector<Vec3> normals;
   if (surface.GetType() == GeomAbs_Plane && !param.empty()) {
@@ -259,13 +250,7 @@ void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
       normals[i] = outer_normal(surface, reversed, polar ? polar_to_uv(*polar, param[i]) : param[i]);
     }
   }
-  check_on_surface_of(face, surface, param, polar, xyz, std::move(normals), out);
-}
-
-void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
-                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
-                      std::vector<Vec3> normals, FaceMeshResult& out) {
-  check_on_surface_of(face, BRepAdaptor_Surface(face), param, polar, xyz, std::move(normals), out);
+  check_on_surface(face, surface, param, polar, xyz, std::move(normals), out);
 }
 
 bool better_face_mesh(const FaceMeshResult& a, const FaceMeshResult& b) {

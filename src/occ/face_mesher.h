@@ -75,15 +75,15 @@ constexpr double kOffSurfaceRatio = 0.25;
 // centre where the surface is singular at the node), its lowest (worst_corner), the
 // quads below -kSurfaceInvertedBelow (inverted), the collapsed ones and those off the
 // surface. param: each local node's mesh coordinates, (u, v) or polar (x, y) when
-// `polar`; xyz: each local node's position.
-void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
-                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
-                      FaceMeshResult& out);
+// `polar`; xyz: each local node's position. `surface`: the face's, from the caller
+// (each adaptor made computes the face's (u, v) bounds, a pass over every pcurve).
+void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surface, const std::vector<Vec3>& param,
+                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz, FaceMeshResult& out);
 // The same with each node's outer normal known (outer_normal at its param), as the
 // smoother keeps them: no evaluation of the surface at the nodes again.
-void check_on_surface(const TopoDS_Face& face, const std::vector<Vec3>& param,
-                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz,
-                      std::vector<Vec3> normals, FaceMeshResult& out);
+void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surface, const std::vector<Vec3>& param,
+                      const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz, std::vector<Vec3> normals,
+                      FaceMeshResult& out);
 
 // Whether mesh a beats mesh b of the same face: fewer inverted quads, then fewer
 // collapsed ones (triangles in effect), then a better worst corner.

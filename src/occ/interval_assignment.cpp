@@ -1,11 +1,7 @@
 #include "occ/interval_assignment.h"
 
-#include <BRepTools.hxx>
-#include <TopoDS_Wire.hxx>
-#include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
 #include <TopExp_Explorer.hxx>
-#include <TopoDS.hxx>
 
 #include <cmath>
 #include <map>

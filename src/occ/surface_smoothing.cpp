@@ -71,7 +71,7 @@ void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<
       FaceMeshResult smoothed = without_nodes_and_quads(mesh);
       smoothed.quads = std::move(quads);
       smoothed.interior.assign(moved.begin() + fixed, moved.end());
-      check_on_surface(face, param, mesh.polar, moved, std::move(normals), smoothed);
+      check_on_surface(face, surface, param, mesh.polar, moved, std::move(normals), smoothed);
       if (!better_face_mesh(best ? *best : mesh, smoothed)) best = std::move(smoothed);
     }
     if (refused == 0) break;  // every doublet merged: the second try would be the same

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
 #include <TopExp_Explorer.hxx>
 
 #include <set>
@@ -28,6 +29,28 @@ std::set<int> edges_of_face(const ShapeIndex& index, int f) {
   std::set<int> edges;
   for (TopExp_Explorer it(index.face(f), TopAbs_EDGE); it.More(); it.Next()) edges.insert(index.edge_index(it.Current()));
   return edges;
+}
+
+TEST(EdgeSpacings, KeptSpacingsGiveTheNodesAFreshDiscretizationGives) {
+  // A cylinder's curved edges (the arc-length spacing is not uniform in parameter).
+  const TopoDS_Shape cylinder = BRepPrimAPI_MakeCylinder(5, 12).Shape();
+  const ShapeIndex index(cylinder);
+  EdgeSpacings kept;
+  std::vector<int> segments(index.edge_count(), 6);
+  std::vector<Vec3> first_nodes;
+  discretize_edges(index, segments, first_nodes, &kept);
+  segments[0] = 10;  // one edge asked again at another count, the others at the same
+  std::vector<Vec3> kept_nodes, fresh_nodes;
+  const std::vector<EdgeNodes> from_kept = discretize_edges(index, segments, kept_nodes, &kept);
+  const std::vector<EdgeNodes> fresh = discretize_edges(index, segments, fresh_nodes);
+  ASSERT_EQ(kept_nodes.size(), fresh_nodes.size());
+  for (std::size_t i = 0; i < fresh_nodes.size(); ++i) EXPECT_TRUE(kept_nodes[i] == fresh_nodes[i]) << "node " << i;
+  ASSERT_EQ(from_kept.size(), fresh.size());
+  for (std::size_t e = 0; e < fresh.size(); ++e) {
+    EXPECT_EQ(from_kept[e].params, fresh[e].params) << "edge " << e;
+    EXPECT_EQ(from_kept[e].nodes, fresh[e].nodes) << "edge " << e;
+    if (!fresh[e].degenerate) EXPECT_EQ(kept[e].segments, segments[e]) << "edge " << e;
+  }
 }
 
 TEST(FaceReuse, AnUnchangedFaceIsTakenOverRenumberedAndEqualsMeshingItAgain) {
