@@ -278,9 +278,23 @@ class WorkbenchGuiTest(unittest.TestCase):
 
     def _cancel_progress_dialog_after(self, milliseconds, screenshot=None):
         """Press Cancel on the progress dialog once it is up; returns a list that gets
-        True when it was found."""
+        True when it was found. Until then the mesher waits at its first report (at
+        most 20 s): otherwise a machine that meshes the 1.5 million quads in under a
+        second, before the dialog shows (400 ms) and while the hand-over to FreeCAD
+        keeps the main thread busy, would leave nothing to cancel."""
+        import threading
         from PySide import QtCore
+        import freecad.templatequad.progress_dialog as progress_dialog
         seen = []
+        pressed = threading.Event()
+        report = progress_dialog._Progress.__call__
+
+        def held_report(progress, stage, done, total):
+            pressed.wait(20)
+            return report(progress, stage, done, total)
+
+        progress_dialog._Progress.__call__ = held_report
+        self.addCleanup(setattr, progress_dialog._Progress, "__call__", report)
 
         def cancel():
             dialogs = [w for w in QtGui.QApplication.topLevelWidgets()
@@ -292,6 +306,8 @@ class WorkbenchGuiTest(unittest.TestCase):
                 dialogs[0].grab().save(screenshot)
             dialogs[0].cancel()
             seen.append(True)
+            progress_dialog._Progress.__call__ = report
+            pressed.set()
 
         QtCore.QTimer.singleShot(milliseconds, cancel)
         return seen
