@@ -119,21 +119,37 @@ std::vector<int> edge_segment_counts(const ShapeIndex& index, double size, const
 
 namespace {
 
-// Edge e's nodes at n > 0 segments by arc length along its 3D curve.
-EdgeSpacing arc_length_spacing(const TopoDS_Edge& edge, int e, int n) {
+// The parameter at arc length s from the start (s > 0) or the end (s < 0) of the curve.
+double parameter_at(const BRepAdaptor_Curve& curve, double s, int e) {
+  const GCPnts_AbscissaPoint at(curve, s, s > 0 ? curve.FirstParameter() : curve.LastParameter());
+  if (!at.IsDone()) throw InputError("edge " + std::to_string(e) + ": no point at a given arc length (a damaged curve?)");
+  return at.Parameter();
+}
+
+// Edge e's nodes at n > 0 segments by arc length along its 3D curve: even, but for the
+// segment at a cusp end (`cusp`), which is that end's length where the even ones
+// would be shorter; the others share what is left evenly.
+EdgeSpacing arc_length_spacing(const TopoDS_Edge& edge, int e, int n, double length, const CuspEnds& cusp) {
   double u0 = 0, u1 = 0;
   BRep_Tool::Range(edge, u0, u1);
   const BRepAdaptor_Curve curve(edge);
+  const double even = length / n;
+  const bool first_long = cusp.first > even, last_long = cusp.last > even;
+  const int middle = n - first_long - last_long;  // >= 1: an end's length is at most a third of the edge
   EdgeSpacing out;
   out.segments = n;
   out.params.push_back(u0);
-  if (n > 1) {
-    GCPnts_UniformAbscissa spacing(curve, n + 1, u0, u1);
-    if (!spacing.IsDone() || spacing.NbPoints() != n + 1) {
+  if (first_long) out.params.push_back(parameter_at(curve, cusp.first, e));
+  const double from = first_long ? out.params.back() : u0;
+  const double to = last_long ? parameter_at(curve, -cusp.last, e) : u1;
+  if (middle > 1) {
+    GCPnts_UniformAbscissa spacing(curve, middle + 1, from, to);
+    if (!spacing.IsDone() || spacing.NbPoints() != middle + 1) {
       throw InputError("edge " + std::to_string(e) + ": its arc-length discretization failed (a damaged curve?)");
     }
-    for (int i = 2; i <= n; ++i) out.params.push_back(spacing.Parameter(i));
+    for (int i = 2; i <= middle; ++i) out.params.push_back(spacing.Parameter(i));
   }
+  if (last_long) out.params.push_back(to);
   out.params.push_back(u1);
   for (int i = 1; i < n; ++i) out.inner_points.push_back(to_vec3(curve.Value(out.params[i])));
   return out;
@@ -145,7 +161,8 @@ std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vect
                                         std::vector<Vec3>& nodes, EdgeSpacings* kept) {
   nodes.clear();
   for (int v = 0; v < index.vertex_count(); ++v) nodes.push_back(to_vec3(BRep_Tool::Pnt(index.vertex(v))));
-  if (kept) kept->resize(index.edge_count());
+  if (kept) kept->last.resize(index.edge_count());
+  const CuspEnds even;
 
   std::vector<EdgeNodes> result(index.edge_count());
   for (int e = 0; e < index.edge_count(); ++e) {
@@ -164,8 +181,11 @@ std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vect
     const int n = segments[e];
     if (n <= 0) continue;
     EdgeSpacing own;  // without `kept`: computed for this call alone
-    EdgeSpacing& spacing = kept ? (*kept)[e] : own;
-    if (spacing.segments != n) spacing = arc_length_spacing(edge, e, n);
+    EdgeSpacing& spacing = kept ? kept->last[e] : own;
+    if (spacing.segments != n) {
+      const CuspEnds& cusp = kept && !kept->cusp_ends.empty() ? kept->cusp_ends[e] : even;
+      spacing = arc_length_spacing(edge, e, n, cusp.any() ? GCPnts_AbscissaPoint::Length(BRepAdaptor_Curve(edge)) : 0.0, cusp);
+    }
     out.params = spacing.params;
     out.nodes.push_back(index.vertex_index(first));
     for (const Vec3& p : spacing.inner_points) {

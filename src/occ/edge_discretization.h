@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/quad_mesh.h"
+#include "occ/cusp_ends.h"
 #include "occ/shape_index.h"
 
 namespace tquad {
@@ -44,15 +45,22 @@ struct EdgeSpacing {
   std::vector<double> params;
   std::vector<Vec3> inner_points;
 };
-// Per edge, the spacing last computed, kept for the next discretization: the interval
-// assignment's provisional one (band_balance.h) and each refinement round ask again
-// for mostly the same counts, and the arc-length spacing is the costly part.
-using EdgeSpacings = std::vector<EdgeSpacing>;
+// How each edge is spaced, and the spacing last computed, kept for the next
+// discretization: the interval assignment's provisional one (band_balance.h) and each
+// refinement round ask again for mostly the same counts, and the arc-length spacing
+// is the costly part.
+struct EdgeSpacings {
+  // Per edge, its cusp ends' segment lengths (cusp_ends.h), or empty: all even.
+  std::vector<CuspEnds> cusp_ends;
+  std::vector<EdgeSpacing> last;
+};
 
 // Places the nodes: vertices (nodes 0 .. vertex_count-1), then the inner nodes of each
 // edge with segments[e] > 0 (edges of unmeshed faces can be given 0 and are skipped).
-// With `kept`, an edge whose count is the one kept takes its spacing from there
-// (the same numbers), and the others' are kept for next time.
+// Segments are even by arc length, but for a cusp end's segment (kept->cusp_ends) where
+// it is longer than the even ones. With `kept`, an edge whose count is the one kept
+// takes its spacing from there (the same numbers), and the others' are kept for next
+// time.
 std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vector<int>& segments,
                                         std::vector<Vec3>& nodes, EdgeSpacings* kept = nullptr);
 

@@ -21,6 +21,7 @@
 
 #include "core/elapsed.h"
 #include "core/input_error.h"
+#include "occ/cusp_ends.h"
 #include "occ/edge_discretization.h"
 #include "occ/mid_edge_nodes.h"
 #include "occ/face_boundary.h"
@@ -238,6 +239,7 @@ class ShapeMeshContext {
     edge_floor_ = edge_turn_minimums(index_, usable);
     raise_three_edge_face_floors(wires_, to_mesh_, edge_floor_);
     sized_ = edge_segment_counts(index_, result_.size, edge_floor_, lengths_, usable);
+    spacings_.cusp_ends = cusp_ends(index_, result_.size, lengths_);
     needed_.assign(index_.edge_count(), 0);
     for (int f = 0; f < index_.face_count(); ++f) {
       if (!to_mesh_[f]) continue;
