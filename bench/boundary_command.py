@@ -23,6 +23,8 @@ import sys
 import tempfile
 import time
 
+from sweep import cpu_model
+
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
@@ -88,6 +90,7 @@ def main():
         report = subprocess.run([args.tquad, "mesh", boundary, "-o", output, "--report", "json"],
                                 capture_output=True, text=True, check=True)
         quads = json.loads(report.stdout)["quads"]
+        print(f"machine: {cpu_model()}, {os.cpu_count()} cores (the ratio to SMESH depends on it)")
         print(f"counts {counts}: {quads:,} quads, {json.loads(report.stdout)['faces'][0]['template_tree']}")
         best = {}
         for label, extra in (("smoothed (default)", []), ("--no-smooth", ["--no-smooth"])):
