@@ -1,0 +1,31 @@
+// turn_flat_boundary_corners: a boundary node that lies in one quad alone, where the
+// boundary is nearly straight, is a corner of nearly 180 degrees of that quad. No node
+// move mends it: the node and its two neighbours along the boundary are shared with
+// the next face and stay (part.step at D/50: a corner of 177.9 degrees, scaled
+// Jacobian 0.011; Zylkopf.stp at D/50: 179.2 degrees, 0.014).
+//
+// The quad and a neighbour across one of its two inner edges make a hexagon; cut
+// along the diagonal from the boundary node instead, the node lies in two quads and
+// its angle is shared between them. Node and quad counts stay, so nodes = 1 + quads +
+// boundary_edges / 2 - holes still holds; a turn is made only where no node is left
+// in fewer quads than it needs (a boundary node in one, an inner node in two: a
+// doublet) and the two new quads are better than the two old ones (worst corner, each
+// corner signed by its node's normal). The caller smooths after it and weighs the
+// result against the mesh without turns.
+#pragma once
+
+#include <vector>
+
+#include "core/quad_mesh.h"
+
+namespace tquad {
+
+// Boundary corners under this scaled Jacobian (about 150 degrees and more) are turned.
+constexpr double kFlatCornerBelow = 0.5;
+
+// Nodes [0, fixed) are the boundary's. position and normal: per node (normal of unit
+// length, or zero: the quad's own normal stands in). Returns the number of turns.
+int turn_flat_boundary_corners(std::vector<Quad>& quads, int fixed, const std::vector<Vec3>& position,
+                               const std::vector<Vec3>& normal);
+
+}  // namespace tquad
