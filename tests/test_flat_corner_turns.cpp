@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <set>
+#include <utility>
 
 #include "core/flat_corner_turns.h"
 #include "core/quality.h"
@@ -65,15 +67,39 @@ TEST(FlatCornerTurns, AGoodMeshIsLeftAsItIs) {
   EXPECT_EQ(quads, grid_quads());
 }
 
-TEST(FlatCornerTurns, NoTurnLeavesANeighbourAloneAtAFlatCorner) {
-  // Node 9 moved to (-1, 0): the boundary runs straight through node 0 too, so the
-  // turn that would leave node 0 alone in a quad (the grid's (0, 1, 10, 9)) is not
-  // made, nor the one leaving node 2 alone at its straight corner.
+// Quads per node.
+std::vector<int> quads_per_node(const std::vector<Quad>& quads, std::size_t nodes) {
+  std::vector<int> count(nodes, 0);
+  for (const Quad& q : quads) for (NodeId n : q) ++count[n];
+  return count;
+}
+
+TEST(FlatCornerTurns, ATurnLeavingANeighbourAloneAtAStraightBoundaryGoesOnToACorner) {
+  // Node 9 moved to (-1, 0): the boundary runs straight through node 0 too. Turning
+  // node 1's quad toward node 0 leaves node 0 alone at 180 degrees, so node 0's quad is
+  // turned as well, which leaves node 9 alone at a real corner (63 degrees): two turns.
+  // Toward node 2 the first turn would leave node 2 alone at 180 degrees in the quad
+  // (1, 2, 3, 4), whose next turn would cut along the boundary edge 3-4: undone.
   std::vector<Vec3> nodes = rectangle_nodes();
   nodes[9] = {-1, 0, 0};
   std::vector<Quad> quads = quads_with_a_flat_corner();
-  EXPECT_EQ(turn_flat_boundary_corners(quads, kBoundaryNodes, nodes, up(nodes.size())), 0);
-  EXPECT_EQ(quads, quads_with_a_flat_corner());
+  EXPECT_EQ(turn_flat_boundary_corners(quads, kBoundaryNodes, nodes, up(nodes.size())), 2);
+  const std::vector<int> count = quads_per_node(quads, nodes.size());
+  EXPECT_EQ(count[1], 2);
+  EXPECT_EQ(count[0], 2);
+  EXPECT_EQ(count[9], 1);
+  for (std::size_t n = kBoundaryNodes; n < nodes.size(); ++n) EXPECT_GE(count[n], 3) << "inner node " << n;
+  // Still one closed, conforming mesh of the same six quads' area: every inner edge in
+  // two quads (once each way), every boundary edge in one.
+  std::map<std::pair<NodeId, NodeId>, int> directed;
+  for (const Quad& q : quads) for (int i = 0; i < 4; ++i) ++directed[{q[i], q[(i + 1) % 4]}];
+  for (const auto& [edge, times] : directed) {
+    EXPECT_EQ(times, 1);
+    const bool on_boundary = edge.first < kBoundaryNodes && edge.second < kBoundaryNodes &&
+                             (edge.second == (edge.first + 1) % kBoundaryNodes);
+    EXPECT_EQ(directed.count({edge.second, edge.first}), on_boundary ? 0u : 1u)
+        << edge.first << " -> " << edge.second;
+  }
 }
 
 }  // namespace

@@ -2,67 +2,52 @@
 
 #include <algorithm>
 #include <array>
-#include <optional>
+#include <utility>
 
-#include "core/node_adjacency.h"
 #include "core/quality.h"
 
 namespace tquad {
 
 namespace {
 
-// Passes over the mesh; each turns quads no other turn of the pass touched.
-constexpr int kPasses = 4;
-
-struct Turn {
-  int first, second;          // the two quads replaced
-  Quad new_first, new_second;  // and their replacements
-  double worst;               // the replacements' worst corner where they are now
-};
+// Which way a chain runs from the lone node a of its quad (a, b, c, d): toward d
+// (turning the edge c-d) or toward b (turning the edge b-c).
+enum class Toward { d, b };
 
 class FlatCornerTurner {
  public:
   FlatCornerTurner(std::vector<Quad>& quads, int fixed, const std::vector<Vec3>& position,
                    const std::vector<Vec3>& normal)
-      : quads_(quads), fixed_(fixed), position_(position), normal_(normal) {}
-
-  int pass() {
-    const CompressedLists around = quads_around_nodes(position_.size(), quads_);
-    std::vector<char> touched(quads_.size(), 0);
-    gained_.assign(position_.size(), 0);
-    int turns = 0;
-    for (int a = 0; a < fixed_; ++a) {
-      if (quads_at(around, a) != 1) continue;
-      const int q = around.items[around.offsets[a]];
-      if (touched[q]) continue;
-      const std::optional<Turn> turn = best_turn(around, a, q, touched);
-      if (!turn) continue;
-      for (NodeId n : quads_[turn->first]) --gained_[n];
-      for (NodeId n : quads_[turn->second]) --gained_[n];
-      quads_[turn->first] = turn->new_first;
-      quads_[turn->second] = turn->new_second;
-      for (NodeId n : turn->new_first) ++gained_[n];
-      for (NodeId n : turn->new_second) ++gained_[n];
-      touched[turn->first] = touched[turn->second] = 1;
-      ++turns;
+      : quads_(quads), fixed_(fixed), position_(position), normal_(normal), around_(position.size()) {
+    for (std::size_t q = 0; q < quads_.size(); ++q) {
+      for (NodeId n : quads_[q]) around_[n].push_back(static_cast<int>(q));
     }
-    return turns;
+  }
+
+  // The shorter of the chains from a flat lone node a in either direction; 0 turns
+  // where neither ends well.
+  int mend(NodeId a) {
+    if (!flat_and_alone(a)) return 0;
+    int best = 0;
+    Toward best_way = Toward::d;
+    for (Toward way : {Toward::d, Toward::b}) {
+      const int turns = chain(a, way);
+      undo(turns);
+      if (turns > 0 && (best == 0 || turns < best)) {
+        best = turns;
+        best_way = way;
+      }
+    }
+    if (best > 0) {
+      chain(a, best_way);
+      log_.clear();
+    }
+    return best;
   }
 
  private:
-  double worst_corner(const Quad& quad) const {
-    std::array<Vec3, 4> p, n;
-    for (int i = 0; i < 4; ++i) {
-      p[i] = position_[quad[i]];
-      n[i] = normal_[quad[i]];
-    }
-    const QuadCorners corners = quad_corners(p, n);
-    return corners.collapsed ? -1.0 : *std::min_element(corners.jacobian.begin(), corners.jacobian.end());
-  }
-
-  // Node n's quads now: the pass's lists, and what its turns so far gave or took.
-  int quads_at(const CompressedLists& around, NodeId n) const {
-    return around.offsets[n + 1] - around.offsets[n] + gained_[n];
+  bool flat_and_alone(NodeId a) const {
+    return around_[a].size() == 1 && corner_at(quads_[around_[a][0]], a) < kFlatCornerBelow;
   }
 
   // The scaled Jacobian of `quad` at its node n, each corner signed by its node's normal.
@@ -76,72 +61,79 @@ class FlatCornerTurner {
     return quad_corners(p, nn).jacobian[k];
   }
 
-  // Whether node n may give up one of its quads, `keeping` the one it stays in: an
-  // inner node keeps three (two would make it a doublet), a boundary node two, or one
-  // where its corner there (between its two boundary neighbours: the boundary's own
-  // angle) is not flat, as at a corner of the face.
-  bool may_lose_one(const CompressedLists& around, NodeId n, const Quad& keeping) const {
-    const int count = quads_at(around, n);
-    if (n >= fixed_) return count >= 4;
-    return count >= 3 || (count == 2 && corner_at(keeping, n) >= kFlatCornerBelow);
-  }
-
-  // The quad other than q with the directed edge from -> to (q has it the other way).
-  int across(const CompressedLists& around, int q, NodeId from, NodeId to, int& at) const {
-    for (int k = around.offsets[from]; k < around.offsets[from + 1]; ++k) {
-      const int r = around.items[k];
+  // The quad other than q with the directed edge from -> to, and where `from` is in it.
+  std::pair<int, int> across(int q, NodeId from, NodeId to) const {
+    for (int r : around_[from]) {
       if (r == q) continue;
       for (int i = 0; i < 4; ++i) {
-        if (quads_[r][i] == from && quads_[r][(i + 1) % 4] == to) {
-          at = i;
-          return r;
-        }
+        if (quads_[r][i] == from && quads_[r][(i + 1) % 4] == to) return {r, i};
       }
     }
-    return -1;
+    return {-1, 0};
   }
 
-  // q = (a, b, c, d) from a. Across c-d lies r = (d, c, x, y): the hexagon a b c x y d
-  // cut along a-x instead gives (a, b, c, x) and (a, x, y, d); c and d lose a quad.
-  // Across b-c lies s = (c, b, u, v): the hexagon a b u v c d cut along a-v gives
-  // (a, b, u, v) and (a, v, c, d); b and c lose a quad.
-  std::optional<Turn> best_turn(const CompressedLists& around, NodeId a, int q, const std::vector<char>& touched) const {
-    const Quad& quad = quads_[q];
-    const int k = static_cast<int>(std::find(quad.begin(), quad.end(), a) - quad.begin());
-    const NodeId b = quad[(k + 1) % 4], c = quad[(k + 2) % 4], d = quad[(k + 3) % 4];
-    if (corner_at(quad, a) >= kFlatCornerBelow) return std::nullopt;
-    std::optional<Turn> best;
-    const auto consider = [&](int r, const Quad& first, const Quad& second) {
-      if (r < 0 || touched[r]) return;
-      for (const Quad& made : {first, second}) {
-        for (int i = 0; i < 4; ++i) {
-          for (int j = i + 1; j < 4; ++j) if (made[i] == made[j]) return;
-        }
-      }
-      const double after = std::min(worst_corner(first), worst_corner(second));
-      if (!best || after > best->worst) {
-        best = Turn{q, r, first, second, after};
-      }
-    };
-    int at = 0;
-    if (const int r = across(around, q, d, c, at); r >= 0) {
-      const NodeId x = quads_[r][(at + 2) % 4], y = quads_[r][(at + 3) % 4];
-      const Quad first{a, b, c, x}, second{a, x, y, d};
-      if (may_lose_one(around, c, first) && may_lose_one(around, d, second)) consider(r, first, second);
+  void replace(int q, const Quad& quad) {
+    log_.emplace_back(q, quads_[q]);
+    set(q, quad);
+  }
+  void set(int q, const Quad& quad) {
+    for (NodeId n : quads_[q]) around_[n].erase(std::find(around_[n].begin(), around_[n].end(), q));
+    quads_[q] = quad;
+    for (NodeId n : quads_[q]) around_[n].push_back(q);
+  }
+  // Undoes the last `turns` turns (two replaced quads each).
+  void undo(int turns) {
+    for (int i = 0; i < 2 * turns; ++i) {
+      set(log_.back().first, log_.back().second);
+      log_.pop_back();
     }
-    if (const int s = across(around, q, c, b, at); s >= 0) {
-      const NodeId u = quads_[s][(at + 2) % 4], v = quads_[s][(at + 3) % 4];
-      const Quad first{a, b, u, v}, second{a, v, c, d};
-      if (may_lose_one(around, b, first) && may_lose_one(around, c, second)) consider(s, first, second);
+  }
+
+  // Turns from the flat lone node a on, `way` along the boundary; returns the number
+  // of turns made when the chain ended well, else undoes them and returns 0.
+  int chain(NodeId a, Toward way) {
+    int turns = 0;
+    for (NodeId lone = a; turns < kMaxChain;) {
+      const int q = around_[lone][0];
+      const Quad quad = quads_[q];
+      const int k = static_cast<int>(std::find(quad.begin(), quad.end(), lone) - quad.begin());
+      const NodeId b = quad[(k + 1) % 4], c = quad[(k + 2) % 4], d = quad[(k + 3) % 4];
+      // The node giving up a quad along the boundary, the one giving up a quad inside
+      // (c), and the two new quads.
+      const NodeId giver = way == Toward::d ? d : b;
+      const auto [r, at] = way == Toward::d ? across(q, d, c) : across(q, c, b);
+      if (r < 0 || c < fixed_ || around_[c].size() < 4) break;
+      const NodeId far1 = quads_[r][(at + 2) % 4], far2 = quads_[r][(at + 3) % 4];
+      const Quad first = way == Toward::d ? Quad{lone, b, c, far1} : Quad{lone, b, far1, far2};
+      const Quad second = way == Toward::d ? Quad{lone, far1, far2, d} : Quad{lone, far2, c, d};
+      if (!distinct(first) || !distinct(second)) break;
+      replace(q, first);
+      replace(r, second);
+      ++turns;
+      if (giver >= fixed_) {  // an inner node (a hole's edge is boundary too): keep three
+        if (around_[giver].size() >= 3) return turns;
+        break;
+      }
+      if (!flat_and_alone(giver)) return turns;  // it kept two quads, or a real corner
+      lone = giver;
     }
-    return best;
+    undo(turns);
+    return 0;
+  }
+
+  static bool distinct(const Quad& q) {
+    for (int i = 0; i < 4; ++i) {
+      for (int j = i + 1; j < 4; ++j) if (q[i] == q[j]) return false;
+    }
+    return true;
   }
 
   std::vector<Quad>& quads_;
   const int fixed_;
   const std::vector<Vec3>& position_;
   const std::vector<Vec3>& normal_;
-  std::vector<int> gained_;  // per node, quads gained (lost: negative) in this pass
+  std::vector<std::vector<int>> around_;            // each node's quads, kept up to date
+  std::vector<std::pair<int, Quad>> log_;           // replaced quads, for undo
 };
 
 }  // namespace
@@ -150,11 +142,7 @@ int turn_flat_boundary_corners(std::vector<Quad>& quads, int fixed, const std::v
                                const std::vector<Vec3>& normal) {
   FlatCornerTurner turner(quads, fixed, position, normal);
   int total = 0;
-  for (int pass = 0; pass < kPasses; ++pass) {
-    const int turns = turner.pass();
-    total += turns;
-    if (turns == 0) break;
-  }
+  for (NodeId a = 0; a < fixed; ++a) total += turner.mend(a);
   return total;
 }
 

@@ -6,12 +6,15 @@
 //
 // The quad and a neighbour across one of its two inner edges make a hexagon; cut
 // along the diagonal from the boundary node instead, the node lies in two quads and
-// its angle is shared between them. Node and quad counts stay, so nodes = 1 + quads +
-// boundary_edges / 2 - holes still holds; a turn is made only where no node is left
-// in fewer quads than it needs (a boundary node in one, an inner node in two: a
-// doublet) and the two new quads are better than the two old ones (worst corner, each
-// corner signed by its node's normal). The caller smooths after it and weighs the
-// result against the mesh without turns.
+// its angle is shared between them. The neighbour along the boundary on that side
+// gives up a quad: where it then lies in one quad alone at a straight boundary too,
+// the same turn is made there, and so on along the boundary (a chain of at most
+// kMaxChain turns) until a node that can spare a quad or whose corner is not flat (a
+// corner of the face); a chain that finds none is undone. Of the two directions, the
+// shorter chain is kept. Node and quad counts stay, so nodes = 1 + quads +
+// boundary_edges / 2 - holes still holds, and no inner node is left in two quads (a
+// doublet). The new quads may be folded where the nodes are: the caller smooths after
+// the turns and weighs the result against the mesh without them.
 #pragma once
 
 #include <vector>
@@ -22,6 +25,8 @@ namespace tquad {
 
 // Boundary corners under this scaled Jacobian (about 150 degrees and more) are turned.
 constexpr double kFlatCornerBelow = 0.5;
+// The longest chain of turns along a boundary.
+constexpr int kMaxChain = 8;
 
 // Nodes [0, fixed) are the boundary's. position and normal: per node (normal of unit
 // length, or zero: the quad's own normal stands in). Returns the number of turns.
