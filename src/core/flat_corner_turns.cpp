@@ -10,6 +10,17 @@ namespace tquad {
 
 namespace {
 
+// The scaled Jacobian of `quad` at its node n, each corner signed by its node's normal.
+double corner_at(const Quad& quad, NodeId n, const std::vector<Vec3>& position, const std::vector<Vec3>& normal) {
+  std::array<Vec3, 4> p, nn;
+  for (int i = 0; i < 4; ++i) {
+    p[i] = position[quad[i]];
+    nn[i] = normal[quad[i]];
+  }
+  const int k = static_cast<int>(std::find(quad.begin(), quad.end(), n) - quad.begin());
+  return quad_corners(p, nn).jacobian[k];
+}
+
 // Which way a chain runs from the lone node a of its quad (a, b, c, d): toward d
 // (turning the edge c-d) or toward b (turning the edge b-c).
 enum class Toward { d, b };
@@ -47,18 +58,7 @@ class FlatCornerTurner {
 
  private:
   bool flat_and_alone(NodeId a) const {
-    return around_[a].size() == 1 && corner_at(quads_[around_[a][0]], a) < kFlatCornerBelow;
-  }
-
-  // The scaled Jacobian of `quad` at its node n, each corner signed by its node's normal.
-  double corner_at(const Quad& quad, NodeId n) const {
-    std::array<Vec3, 4> p, nn;
-    for (int i = 0; i < 4; ++i) {
-      p[i] = position_[quad[i]];
-      nn[i] = normal_[quad[i]];
-    }
-    const int k = static_cast<int>(std::find(quad.begin(), quad.end(), n) - quad.begin());
-    return quad_corners(p, nn).jacobian[k];
+    return around_[a].size() == 1 && corner_at(quads_[around_[a][0]], a, position_, normal_) < kFlatCornerBelow;
   }
 
   // The quad other than q with the directed edge from -> to, and where `from` is in it.
@@ -140,6 +140,20 @@ class FlatCornerTurner {
 
 int turn_flat_boundary_corners(std::vector<Quad>& quads, int fixed, const std::vector<Vec3>& position,
                                const std::vector<Vec3>& normal) {
+  // Most meshes have no boundary node alone in a quad at a flat corner: found by
+  // counting the boundary nodes' quads, before each node's list is built.
+  std::vector<int> lone_in(fixed, -1);  // the quad of a node alone in one, -2 if in more
+  for (std::size_t q = 0; q < quads.size(); ++q) {
+    for (NodeId n : quads[q]) {
+      if (n < fixed) lone_in[n] = lone_in[n] == -1 ? static_cast<int>(q) : -2;
+    }
+  }
+  bool any = false;
+  for (NodeId n = 0; n < fixed && !any; ++n) {
+    if (lone_in[n] < 0) continue;
+    any = corner_at(quads[lone_in[n]], n, position, normal) < kFlatCornerBelow;
+  }
+  if (!any) return 0;
   FlatCornerTurner turner(quads, fixed, position, normal);
   int total = 0;
   for (NodeId a = 0; a < fixed; ++a) total += turner.mend(a);
