@@ -63,6 +63,8 @@ TEST(FlatCornerTurns, ALoneNodeAtAStraightBoundaryGetsASecondQuad) {
 TEST(FlatCornerTurns, AGoodMeshIsLeftAsItIs) {
   const std::vector<Vec3> nodes = rectangle_nodes();
   std::vector<Quad> quads = grid_quads();
+  EXPECT_FALSE(has_flat_lone_corner(quads, kBoundaryNodes, nodes, up(nodes.size())));
+  EXPECT_TRUE(has_flat_lone_corner(quads_with_a_flat_corner(), kBoundaryNodes, nodes, up(nodes.size())));
   EXPECT_EQ(turn_flat_boundary_corners(quads, kBoundaryNodes, nodes, up(nodes.size())), 0);
   EXPECT_EQ(quads, grid_quads());
 }

@@ -138,22 +138,23 @@ class FlatCornerTurner {
 
 }  // namespace
 
-int turn_flat_boundary_corners(std::vector<Quad>& quads, int fixed, const std::vector<Vec3>& position,
-                               const std::vector<Vec3>& normal) {
-  // Most meshes have no boundary node alone in a quad at a flat corner: found by
-  // counting the boundary nodes' quads, before each node's list is built.
+bool has_flat_lone_corner(const std::vector<Quad>& quads, int fixed, const std::vector<Vec3>& position,
+                          const std::vector<Vec3>& normal) {
   std::vector<int> lone_in(fixed, -1);  // the quad of a node alone in one, -2 if in more
   for (std::size_t q = 0; q < quads.size(); ++q) {
     for (NodeId n : quads[q]) {
       if (n < fixed) lone_in[n] = lone_in[n] == -1 ? static_cast<int>(q) : -2;
     }
   }
-  bool any = false;
-  for (NodeId n = 0; n < fixed && !any; ++n) {
-    if (lone_in[n] < 0) continue;
-    any = corner_at(quads[lone_in[n]], n, position, normal) < kFlatCornerBelow;
+  for (NodeId n = 0; n < fixed; ++n) {
+    if (lone_in[n] >= 0 && corner_at(quads[lone_in[n]], n, position, normal) < kFlatCornerBelow) return true;
   }
-  if (!any) return 0;
+  return false;
+}
+
+int turn_flat_boundary_corners(std::vector<Quad>& quads, int fixed, const std::vector<Vec3>& position,
+                               const std::vector<Vec3>& normal) {
+  if (!has_flat_lone_corner(quads, fixed, position, normal)) return 0;  // most meshes
   FlatCornerTurner turner(quads, fixed, position, normal);
   int total = 0;
   for (NodeId a = 0; a < fixed; ++a) total += turner.mend(a);

@@ -28,6 +28,12 @@ constexpr double kFlatCornerBelow = 0.5;
 // The longest chain of turns along a boundary.
 constexpr int kMaxChain = 8;
 
+// Whether some boundary node (of [0, fixed)) lies in one quad alone at a corner under
+// kFlatCornerBelow: one count of the boundary nodes' quads, so that most meshes, which
+// have none, cost no more.
+bool has_flat_lone_corner(const std::vector<Quad>& quads, int fixed, const std::vector<Vec3>& position,
+                          const std::vector<Vec3>& normal);
+
 // Nodes [0, fixed) are the boundary's. position and normal: per node (normal of unit
 // length, or zero: the quad's own normal stands in). Returns the number of turns.
 int turn_flat_boundary_corners(std::vector<Quad>& quads, int fixed, const std::vector<Vec3>& position,

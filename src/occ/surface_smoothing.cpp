@@ -81,8 +81,12 @@ void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<
   // these again with flat boundary corners turned (core/flat_corner_turns.h) where
   // the mesh has any: the best kept. `mesh` stays as it is until the end: each try
   // starts from it.
-  std::vector<Quad> turned = mesh.quads;
-  const bool any_turn = turn_flat_boundary_corners(turned, static_cast<int>(fixed), position, mesh.normal) > 0;
+  std::vector<Quad> turned;
+  bool any_turn = false;
+  if (has_flat_lone_corner(mesh.quads, static_cast<int>(fixed), position, mesh.normal)) {
+    turned = mesh.quads;
+    any_turn = turn_flat_boundary_corners(turned, static_cast<int>(fixed), position, mesh.normal) > 0;
+  }
   std::optional<FaceMeshResult> best;
   for (bool even_if_worse : {false, true}) {
     int refused_any = 0;
