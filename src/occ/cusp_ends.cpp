@@ -94,6 +94,7 @@ std::vector<CuspEnds> cusp_ends(const ShapeIndex& index, double size, const std:
   std::vector<CuspEnds> out(index.edge_count());
   const auto mark = [&](const EdgeEnd& end) {
     (end.first ? out[end.edge].first : out[end.edge].last) = end_length(size, lengths[end.edge]);
+    out[end.edge].edge_length = lengths[end.edge];
   };
   for (int f = 0; f < index.face_count(); ++f) {
     for (const auto& [vertex, ends] : ends_by_vertex(index, f, lengths)) {

@@ -19,6 +19,7 @@ namespace tquad {
 struct CuspEnds {
   double first = 0.0;
   double last = 0.0;
+  double edge_length = 0.0;  // the edge's arc length, where an end is a cusp end
   bool any() const { return first > 0.0 || last > 0.0; }
 };
 

@@ -129,13 +129,15 @@ double parameter_at(const BRepAdaptor_Curve& curve, double s, int e) {
 // Edge e's nodes at n > 0 segments by arc length along its 3D curve: even, but for the
 // segment at a cusp end (`cusp`), which is that end's length where the even ones
 // would be shorter; the others share what is left evenly.
-EdgeSpacing arc_length_spacing(const TopoDS_Edge& edge, int e, int n, double length, const CuspEnds& cusp) {
+EdgeSpacing arc_length_spacing(const TopoDS_Edge& edge, int e, int n, const CuspEnds& cusp) {
   double u0 = 0, u1 = 0;
   BRep_Tool::Range(edge, u0, u1);
   const BRepAdaptor_Curve curve(edge);
-  const double even = length / n;
+  const double even = cusp.edge_length / n;
   const bool first_long = cusp.first > even, last_long = cusp.last > even;
-  const int middle = n - first_long - last_long;  // >= 1: an end's length is at most a third of the edge
+  // n, or at least 2 where an end is long: an end is at most a third of the edge, so it
+  // is longer than the even segments only for n >= 4.
+  const int middle = n - first_long - last_long;
   EdgeSpacing out;
   out.segments = n;
   out.params.push_back(u0);
@@ -184,7 +186,7 @@ std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vect
     EdgeSpacing& spacing = kept ? kept->last[e] : own;
     if (spacing.segments != n) {
       const CuspEnds& cusp = kept && !kept->cusp_ends.empty() ? kept->cusp_ends[e] : even;
-      spacing = arc_length_spacing(edge, e, n, cusp.any() ? GCPnts_AbscissaPoint::Length(BRepAdaptor_Curve(edge)) : 0.0, cusp);
+      spacing = arc_length_spacing(edge, e, n, cusp);
     }
     out.params = spacing.params;
     out.nodes.push_back(index.vertex_index(first));
