@@ -43,6 +43,16 @@ std::vector<int> add_cut_nodes(const PlanarDomain& domain, const std::vector<int
   return nodes;
 }
 
+// Fewer inverted quads, then fewer collapsed ones, then the better worst scaled
+// Jacobian.
+bool better_planar_mesh(const QuadMesh& a, const QuadMesh& b) {
+  const Vec3 up{0, 0, 1};
+  const QualitySummary qa = summarize_quality(a, up), qb = summarize_quality(b, up);
+  if (qa.inverted != qb.inverted) return qa.inverted < qb.inverted;
+  if (qa.collapsed != qb.collapsed) return qa.collapsed < qb.collapsed;
+  return qa.scaled_jacobian.min > qb.scaled_jacobian.min;
+}
+
 }  // namespace
 
 QuadMesh mesh_decomposed_domain(const PlanarDomain& domain, const FaceDecomposition& d,
@@ -115,8 +125,23 @@ QuadMesh mesh_planar_domain(const PlanarDomain& domain, double size, const MeshO
   if (!(size > 0) || !std::isfinite(size)) throw InputError("the target size must be a positive number");
   check_planar_domain(domain);
   const RingedDomain ringed = ring_holes(domain);
-  const FaceDecomposition d = decompose_domain(ringed.inner);
-  const QuadMesh inner = mesh_decomposed_domain(ringed.inner, d, assign_cut_intervals(ringed.inner, d, size), options);
+  const auto mesh_with = [&](const DecompositionOptions& variant, PatchMeshMemo& memo, int* sliver_pairs) {
+    const FaceDecomposition d = decompose_domain(ringed.inner, variant);
+    if (sliver_pairs) *sliver_pairs = d.sliver_pairs;
+    return mesh_decomposed_domain(ringed.inner, d, assign_cut_intervals(ringed.inner, d, size), options, &memo);
+  };
+  PatchMeshMemo memo;
+  int sliver_pairs = 0;
+  QuadMesh inner = mesh_with({}, memo, &sliver_pairs);
+  if (sliver_pairs > 0) {
+    // DecompositionOptions::merge_sliver_pairs: the domain meshed without them too, the
+    // better kept (measured on the generated domains of the tests: with them alone,
+    // 1 of 5,040 meshes inverted and 47 with collapsed quads, against 0 and 32).
+    DecompositionOptions unmerged;
+    unmerged.merge_sliver_pairs = false;
+    QuadMesh other = mesh_with(unmerged, memo, nullptr);
+    if (better_planar_mesh(other, inner)) inner = std::move(other);
+  }
   return join_rings(domain, ringed, inner);
 }
 

@@ -69,6 +69,9 @@ class LoopCoarsening {
   }
 
   const std::set<int>& coarse() const { return coarse_; }
+  bool is_coarse(int point) const { return coarse_.count(point) > 0; }
+  void add(int point) { coarse_.insert(point); }
+  double turn(int point) const { return turns_[point]; }
 
   // (first, last) of each piece between consecutive coarse vertices, in loop order.
   std::vector<std::pair<int, int>> pieces() const {
@@ -199,10 +202,20 @@ std::vector<std::pair<int, int>> cut_obstacles(const PlanarDomain& d, int lx, in
 
 namespace {
 
+// Patches of coarse corners (counter-clockwise) made of the coarse triangles, and the
+// diagonals (lower id first) of the pairs merged outside the corner window because
+// their triangles were slivers.
+struct Pairing {
+  std::vector<std::vector<int>> patches;
+  std::set<std::pair<int, int>> rescued_diagonals;
+};
+
 class Decomposer {
  public:
-  Decomposer(const PlanarDomain& domain, const DecompositionOptions& options) : d_(domain) {
+  Decomposer(const PlanarDomain& domain, const DecompositionOptions& options)
+      : d_(domain), merge_sliver_pairs_(options.merge_sliver_pairs) {
     for (const DomainLoop& loop : d_.loops) coarsening_.emplace_back(loop);
+    join_thin_junctions();
     split_by_feature_size();
     if (options.clear_corner_ears) corner_splits_ = clear_corner_ears();
   }
@@ -233,27 +246,36 @@ class Decomposer {
         coarse = every_point();
         continue;
       }
-      // (loop, segment): met by a cut (must be cleared), or meeting a cut's end at a
-      // sliver angle (cleared when its piece can still be split).
-      std::vector<std::pair<int, int>> blocked, sliver;
+      // (loop, segment) met by a cut: must be cleared.
+      std::vector<std::pair<int, int>> blocked;
       for (const CoarseTriangle& t : triangles) {
         for (int i = 0; i < 3; ++i) {
           const int x = t[i], y = t[(i + 1) % 3];
           // Each diagonal is met once in each direction: checked once.
-          if (x < y && !polygon.is_piece(x, y) && !polygon.is_piece(y, x)) check_cut(polygon, x, y, blocked, sliver);
+          if (x < y && !polygon.is_piece(x, y) && !polygon.is_piece(y, x)) blocked_segments(polygon, x, y, blocked);
         }
       }
       if (last_resort) {
         if (!blocked.empty()) throw InputError("the boundary cannot be cut into patches: a cut leaves the domain");
-        build(polygon, triangles, out);
+        const Pairing pairing = pair_triangles(polygon, triangles);
+        build(polygon, pairing.patches, out);
+        out.sliver_pairs = static_cast<int>(pairing.rescued_diagonals.size());
         return out;
       }
       bool added = false;
       for (const auto& [loop, segment] : blocked) added = coarsening_[loop].split_piece_at(segment) || added;
       if (blocked.empty()) {
-        if (round < kRounds) for (const auto& [loop, segment] : sliver) added = coarsening_[loop].split_piece_at(segment) || added;
+        // A diagonal that a pair merged only for its slivers (Pairing) is left out:
+        // splitting a piece there brings the slivers back.
+        const Pairing pairing = pair_triangles(polygon, triangles);
+        if (round < kRounds) {
+          for (const auto& [loop, segment] : sliver_segments(polygon, triangles, pairing.rescued_diagonals)) {
+            added = coarsening_[loop].split_piece_at(segment) || added;
+          }
+        }
         if (!added) {
-          build(polygon, triangles, out);
+          build(polygon, pairing.patches, out);
+          out.sliver_pairs = static_cast<int>(pairing.rescued_diagonals.size());
           return out;
         }
       }
@@ -312,6 +334,49 @@ class Decomposer {
     return false;
   }
 
+  // A reflex corner much nearer to a boundary point in front of it than to its own
+  // neighbours is a thin junction (a thin flange meeting a plate, part.step face 22:
+  // 0.22 across, segments of 8.5): that point becomes a coarse vertex, so that the
+  // triangulation can cut straight across and the flange stays one band of quads
+  // instead of a fan of slivers into the middle of its long side.
+  void join_thin_junctions() {
+    constexpr double kThinJunction = 0.5;  // cut / shortest boundary segment at its ends
+    for (int l = 0; l < d_.loop_count(); ++l) {
+      const int n = loop_size(l);
+      for (const int c : std::vector<int>(coarsening_[l].coarse().begin(), coarsening_[l].coarse().end())) {
+        if (coarsening_[l].turn(c) > -kSharpVertexTurn) continue;
+        const auto [before, after] = neighbours_of(l, c);
+        int best_loop = -1, best_point = -1;
+        double best = INFINITY;
+        for (int m = 0; m < d_.loop_count(); ++m) {
+          for (int i = 0; i < loop_size(m); ++i) {
+            if (m == l && wrap(i - before, n) <= wrap(after - before, n)) continue;
+            const double gap = distance(point(l, c), point(m, i));
+            if (gap < best) { best = gap; best_loop = m; best_point = i; }
+          }
+        }
+        if (best_loop < 0 || coarsening_[best_loop].is_coarse(best_point)) continue;
+        if (best >= kThinJunction * std::min(shortest_segment_at(l, c), shortest_segment_at(best_loop, best_point))) continue;
+        if (!cut_obstacles(d_, l, c, best_loop, best_point).empty()) continue;
+        coarsening_[best_loop].add(best_point);
+      }
+    }
+  }
+
+  // The coarse vertices before and after point c of loop l.
+  std::pair<int, int> neighbours_of(int l, int c) const {
+    const std::set<int>& coarse = coarsening_[l].coarse();
+    auto it = coarse.find(c);
+    const int after = std::next(it) == coarse.end() ? *coarse.begin() : *std::next(it);
+    const int before = it == coarse.begin() ? *coarse.rbegin() : *std::prev(it);
+    return {before, after};
+  }
+
+  double shortest_segment_at(int l, int i) const {
+    const int n = loop_size(l);
+    return std::min(distance(point(l, wrap(i - 1, n)), point(l, i)), distance(point(l, i), point(l, (i + 1) % n)));
+  }
+
   // Pieces much longer than the gap in front of them (the distance from their middle
   // to the rest of the boundary, their neighbouring pieces left out) are split, so the
   // coarse vertices are spaced like the domain's local feature size and the
@@ -368,26 +433,37 @@ class Decomposer {
     return coarse;
   }
 
-  // Checks the straight cut between coarse vertices x and y against the boundary:
-  // appends to `blocked` the segments it meets away from its own ends (or, when it
-  // leaves the domain at an end, the segments there), and to `sliver` the segments at
-  // an end that it leaves at less than kMinCutAngle.
-  void check_cut(const CoarsePolygon& polygon, int x, int y, std::vector<std::pair<int, int>>& blocked,
-                 std::vector<std::pair<int, int>>& sliver) const {
-    const int lx = polygon.loop(x), ly = polygon.loop(y);
-    const int px = polygon.point(x), py = polygon.point(y);
-    const std::vector<std::pair<int, int>> obstacles = cut_obstacles(d_, lx, px, ly, py);
-    if (!obstacles.empty()) {
-      blocked.insert(blocked.end(), obstacles.begin(), obstacles.end());
-      return;
+  // Appends to `blocked` the boundary segments that the straight cut between coarse
+  // vertices x and y meets away from its own ends (or, when it leaves the domain at
+  // an end, the segments there).
+  void blocked_segments(const CoarsePolygon& polygon, int x, int y, std::vector<std::pair<int, int>>& blocked) const {
+    const std::vector<std::pair<int, int>> obstacles =
+        cut_obstacles(d_, polygon.loop(x), polygon.point(x), polygon.loop(y), polygon.point(y));
+    blocked.insert(blocked.end(), obstacles.begin(), obstacles.end());
+  }
+
+  // The boundary segments (loop, segment) at the ends of the triangles' diagonals
+  // (but `skipped`) that a diagonal leaves at less than kMinCutAngle.
+  std::vector<std::pair<int, int>> sliver_segments(const CoarsePolygon& polygon, const std::vector<CoarseTriangle>& triangles,
+                                                   const std::set<std::pair<int, int>>& skipped) const {
+    std::vector<std::pair<int, int>> sliver;
+    for (const CoarseTriangle& t : triangles) {
+      for (int i = 0; i < 3; ++i) {
+        const int x = t[i], y = t[(i + 1) % 3];
+        // Each diagonal is a side of two triangles, once in each direction: checked once.
+        if (x > y || polygon.is_piece(x, y) || polygon.is_piece(y, x) || skipped.count({x, y})) continue;
+        const int lx = polygon.loop(x), ly = polygon.loop(y);
+        const int px = polygon.point(x), py = polygon.point(y);
+        const Vec3 &a = point(lx, px), &b = point(ly, py);
+        for (const auto& [l, p, from, to] : {std::tuple{lx, px, a, b}, std::tuple{ly, py, b, a}}) {
+          const int n = loop_size(l);
+          const Vec3 &prev = point(l, wrap(p - 1, n)), &next = point(l, wrap(p + 1, n));
+          if (angle_between(next - from, to - from) < kMinCutAngle) sliver.push_back({l, p});
+          if (angle_between(prev - from, to - from) < kMinCutAngle) sliver.push_back({l, wrap(p - 1, n)});
+        }
+      }
     }
-    const Vec3 &a = point(lx, px), &b = point(ly, py);
-    for (const auto& [l, p, from, to] : {std::tuple{lx, px, a, b}, std::tuple{ly, py, b, a}}) {
-      const int n = loop_size(l);
-      const Vec3 &prev = point(l, wrap(p - 1, n)), &next = point(l, wrap(p + 1, n));
-      if (angle_between(next - from, to - from) < kMinCutAngle) sliver.push_back({l, p});
-      if (angle_between(prev - from, to - from) < kMinCutAngle) sliver.push_back({l, wrap(p - 1, n)});
-    }
+    return sliver;
   }
 
   // Segments of the boundary piece that starts at coarse vertex x.
@@ -429,16 +505,9 @@ class Decomposer {
     return worst;
   }
 
-  void build(const CoarsePolygon& polygon, const std::vector<CoarseTriangle>& triangles, FaceDecomposition& out) const {
-    // Pieces: one per coarse side on a loop.
-    std::map<std::pair<int, int>, int> piece_of;
-    for (std::size_t l = 0; l < polygon.points.size(); ++l) {
-      const std::vector<int>& pts = polygon.points[l];
-      for (std::size_t k = 0; k < pts.size(); ++k) {
-        piece_of[{static_cast<int>(l), static_cast<int>(k)}] = static_cast<int>(out.pieces.size());
-        out.pieces.push_back({static_cast<int>(l), pts[k], pts[(k + 1) % pts.size()]});
-      }
-    }
+  // Triangles paired across cuts into four-sided patches where the pair is worth it,
+  // the others left as they are.
+  Pairing pair_triangles(const CoarsePolygon& polygon, const std::vector<CoarseTriangle>& triangles) const {
     // Triangles across each diagonal, and the pairs worth merging, best first.
     std::map<std::pair<int, int>, std::vector<int>> across;
     for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
@@ -458,7 +527,7 @@ class Decomposer {
         if (polygon.is_piece(x, y) && piece_segments(polygon, x) == 1) needs_pair[t] = 1;
       }
     }
-    struct Pair { bool urgent; double quality; int t1, t2; std::vector<int> corners; };
+    struct Pair { bool urgent, rescued; double quality; int t1, t2; std::vector<int> corners; std::pair<int, int> diagonal; };
     std::vector<Pair> pairs;
     for (const auto& [edge, users] : across) {
       if (users.size() != 2) continue;
@@ -470,21 +539,47 @@ class Decomposer {
       for (int v : t2) if (v != a && v != b) d = v;
       const std::vector<int> corners{a, d, b, c};
       const bool urgent = needs_pair[users[0]] || needs_pair[users[1]];
-      const double q = corner_quality(polygon, corners, urgent ? kUrgentPairAngleMin : kPairAngleMin);
-      if (q > 0) pairs.push_back({urgent, q, users[0], users[1], corners});
+      double q = corner_quality(polygon, corners, urgent ? kUrgentPairAngleMin : kPairAngleMin);
+      bool rescued = false;
+      if (q <= 0 && merge_sliver_pairs_) {
+        // Outside the window, the quadrilateral is still the better patch when its
+        // worst corner beats the worst corner of one of its triangles, which a
+        // triangle's mesh keeps: two slivers across a thin junction (0.6 degrees)
+        // make one band with corners of 19 and 161 degrees.
+        const double merged = corner_quality(polygon, corners, 0.0);
+        const double alone = std::min(corner_quality(polygon, {t1[0], t1[1], t1[2]}, 0.0),
+                                      corner_quality(polygon, {t2[0], t2[1], t2[2]}, 0.0));
+        rescued = merged > alone;
+        if (rescued) q = merged;
+      }
+      if (q > 0) pairs.push_back({urgent, rescued, q, users[0], users[1], corners, edge});
     }
     std::stable_sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) {
       return x.urgent != y.urgent ? x.urgent : x.quality > y.quality;
     });
     std::vector<char> used(triangles.size(), 0);
-    std::vector<std::vector<int>> patches;
+    Pairing out;
     for (const Pair& p : pairs) {
       if (used[p.t1] || used[p.t2]) continue;
       used[p.t1] = used[p.t2] = 1;
-      patches.push_back(p.corners);
+      out.patches.push_back(p.corners);
+      if (p.rescued) out.rescued_diagonals.insert(p.diagonal);
     }
     for (std::size_t t = 0; t < triangles.size(); ++t) {
-      if (!used[t]) patches.push_back({triangles[t][0], triangles[t][1], triangles[t][2]});
+      if (!used[t]) out.patches.push_back({triangles[t][0], triangles[t][1], triangles[t][2]});
+    }
+    return out;
+  }
+
+  void build(const CoarsePolygon& polygon, const std::vector<std::vector<int>>& patches, FaceDecomposition& out) const {
+    // Pieces: one per coarse side on a loop.
+    std::map<std::pair<int, int>, int> piece_of;
+    for (std::size_t l = 0; l < polygon.points.size(); ++l) {
+      const std::vector<int>& pts = polygon.points[l];
+      for (std::size_t k = 0; k < pts.size(); ++k) {
+        piece_of[{static_cast<int>(l), static_cast<int>(k)}] = static_cast<int>(out.pieces.size());
+        out.pieces.push_back({static_cast<int>(l), pts[k], pts[(k + 1) % pts.size()]});
+      }
     }
     // Sides: pieces, or cuts numbered in order of first use.
     std::map<std::pair<int, int>, int> cut_of;
@@ -519,6 +614,7 @@ class Decomposer {
 
   int corner_splits_ = 0;
   const PlanarDomain& d_;
+  bool merge_sliver_pairs_ = true;
   std::vector<LoopCoarsening> coarsening_;
 };
 

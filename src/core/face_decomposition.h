@@ -8,6 +8,8 @@
 //     boundary between two coarse vertices turns by more than 60 degrees (a circle
 //     gets 6) or is longer than twice the gap in front of it (the local feature
 //     size), each new piece keeping 2 segments or more, and every loop has at least 3.
+//     A reflex corner much nearer to a point in front of it than to its neighbours (a
+//     thin junction) makes that point a coarse vertex too, so a short cut can join them.
 //  2. A triangulation of the polygon of coarse vertices (coarse_triangulation.h).
 //     Its diagonals are the cuts, straight in the chart. A cut that meets the real
 //     boundary (a piece bulging across its chord), or leaves it at a sliver angle,
@@ -18,7 +20,8 @@
 //     refused.
 //  3. Triangles are paired across cuts into four-sided patches, greedily by the shape
 //     of the merged quadrilateral (its corners measured on the real boundary pieces),
-//     when every corner lies between 25 and 155 degrees; unpaired triangles stay
+//     when every corner lies between 25 and 155 degrees (or when the quadrilateral
+//     beats a sliver triangle, DecompositionOptions::merge_sliver_pairs); unpaired triangles stay
 //     three-sided patches (T3/T4). Greedy rather than Boost.Graph's
 //     maximum_weighted_matching, which in Boost 1.74 can crash or not terminate on
 //     some graphs (boostorg/graph issues 199, 223, 399).
@@ -63,6 +66,7 @@ struct FaceDecomposition {
   std::vector<CutCurve> cuts;
   std::vector<DomainPatch> patches;
   int corner_splits = 0;  // pieces split by DecompositionOptions::clear_corner_ears
+  int sliver_pairs = 0;   // patches merged by DecompositionOptions::merge_sliver_pairs
 };
 
 struct DecompositionOptions {
@@ -75,6 +79,14 @@ struct DecompositionOptions {
   // It also moves cuts elsewhere, sometimes for the worse (as1 faces 66 and 145: worst
   // corner 0.458 to 0.320), so callers mesh both and keep the better.
   bool clear_corner_ears = false;
+  // Two triangles whose quadrilateral has a corner outside [25, 155] degrees are
+  // still one patch when its worst corner beats the worst corner of one of them
+  // (a thin flange meeting a plate, part.step face 22: two slivers of 0.6 degrees
+  // across the junction become a band with corners of 19 and 161 degrees), and a
+  // sliver diagonal of such a pair splits no piece. It also changes the patches of
+  // other faces, sometimes for the worse (Zylkopf.stp face 6 at diagonal / 100:
+  // worst quad 0.44 to 0.18), so callers mesh both and keep the better.
+  bool merge_sliver_pairs = true;
 };
 
 // Throws InputError, naming the loop and point or segment, when a loop has fewer than

@@ -161,15 +161,38 @@ class FaceChart {
   std::vector<Vec3> uv_;
 };
 
-// The face meshed on its decomposition with corner ears cleared; nothing when that
-// changes no piece (the same decomposition as the plain one).
-std::optional<FaceMeshResult> mesh_with_corner_ears_cleared(const FaceChart& chart, double edge_size,
-                                                           const MeshOptions& options, PatchMeshMemo& memo) {
+// The face meshed on its decomposition with `options`; nothing when `changed` says
+// that the options changed nothing (the same decomposition as the plain one).
+std::optional<FaceMeshResult> mesh_variant(const FaceChart& chart, const DecompositionOptions& variant,
+                                           int (*changed)(const FaceDecomposition&), double edge_size,
+                                           const MeshOptions& options, PatchMeshMemo& memo) {
+  const FaceDecomposition decomposition = decompose_domain(chart.domain(), variant);
+  if (changed(decomposition) == 0) return std::nullopt;
+  return chart.mesh(decomposition, edge_size, options, &memo);
+}
+
+// The variants of the plain decomposition that may mesh a face better
+// (DecompositionOptions): corner ears cleared; sliver pairs left as triangles.
+std::vector<std::optional<FaceMeshResult>> mesh_variants(const FaceChart& chart, int plain_sliver_pairs,
+                                                         double edge_size, const MeshOptions& options,
+                                                         PatchMeshMemo& memo) {
+  std::vector<std::optional<FaceMeshResult>> out;
   DecompositionOptions cleared;
   cleared.clear_corner_ears = true;
-  const FaceDecomposition decomposition = decompose_domain(chart.domain(), cleared);
-  if (decomposition.corner_splits == 0) return std::nullopt;
-  return chart.mesh(decomposition, edge_size, options, &memo);
+  try {
+    out.push_back(mesh_variant(chart, cleared, [](const FaceDecomposition& d) { return d.corner_splits; }, edge_size,
+                               options, memo));
+  } catch (const std::exception&) {  // the plain decomposition's mesh stays, as in face_route
+  }
+  if (plain_sliver_pairs > 0) {
+    DecompositionOptions unmerged;
+    unmerged.merge_sliver_pairs = false;
+    try {
+      out.push_back(mesh_variant(chart, unmerged, [](const FaceDecomposition&) { return 1; }, edge_size, options, memo));
+    } catch (const std::exception&) {
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -179,24 +202,20 @@ FaceMeshResult mesh_face_decomposed(const TopoDS_Face& face, int face_index, con
                                     const MeshOptions& options) {
   const FaceChart chart(face, face_index, b, nodes, vertex_nodes);
   std::optional<FaceMeshResult> best;
-  PatchMeshMemo patches;  // the two decompositions differ only near corners
+  PatchMeshMemo patches;  // the decompositions differ only here and there
+  std::string plain_problem;
+  int sliver_pairs = 1;  // unknown until the plain decomposition is made: try without them
   try {
-    best = chart.mesh(decompose_domain(chart.domain()), edge_size, options, &patches);
+    const FaceDecomposition plain = decompose_domain(chart.domain());
+    sliver_pairs = plain.sliver_pairs;
+    best = chart.mesh(plain, edge_size, options, &patches);
   } catch (const InputError& e) {
-    // The decomposition with its corner ears cleared below may still mesh the face.
-    try {
-      return mesh_with_corner_ears_cleared(chart, edge_size, options, patches).value();
-    } catch (const std::exception&) {
-    }
-    throw InputError(chart.name() + " (decomposed into patches): " + e.what());
+    plain_problem = e.what();  // a variant below may still mesh the face
   }
-  try {
-    // Either may be the better (DecompositionOptions::clear_corner_ears).
-    if (auto cleared = mesh_with_corner_ears_cleared(chart, edge_size, options, patches); cleared && better_face_mesh(*cleared, *best)) {
-      best = std::move(cleared);
-    }
-  } catch (const std::exception&) {  // the plain decomposition's mesh stays, as in face_route
+  for (std::optional<FaceMeshResult>& variant : mesh_variants(chart, sliver_pairs, edge_size, options, patches)) {
+    if (variant && (!best || better_face_mesh(*variant, *best))) best = std::move(variant);
   }
+  if (!best) throw InputError(chart.name() + " (decomposed into patches): " + plain_problem);
   return std::move(*best);
 }
 
