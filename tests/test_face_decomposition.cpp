@@ -157,6 +157,24 @@ TEST(FaceDecomposition, ThinFlangeOnAPlateIsCutStraightAcrossItsJunctions) {
   EXPECT_GT(worst, fan_worst + 0.1);
 }
 
+TEST(FaceDecomposition, ACuspTrianglesLongSidesAreSplitForTheNeighbourAcrossTheCusp) {
+  // A triangle with a 10-degree corner: its three pieces are all neighbours of each
+  // other, so only the long sides' points across the cusp can be in front of them.
+  PlanarDomain d;
+  d.loops.push_back(segmented_loop({{0, 0}, {10, 0}, {10, 10 * std::tan(10 * M_PI / 180)}}, {20, 4, 20}));
+  DecompositionOptions without;
+  without.neighbours_across_corners = false;
+  const FaceDecomposition split = decompose_domain(d), alone = decompose_domain(d, without);
+  EXPECT_GT(split.neighbour_splits, 0);
+  EXPECT_EQ(alone.neighbour_splits, 0);
+  EXPECT_EQ(alone.patches.size(), 1u);
+  EXPECT_GT(split.patches.size(), 1u);
+  const QuadMesh mesh = mesh_planar_domain(d, 0.5);
+  expect_valid(d, mesh, "cusp triangle");
+  std::printf("[ cusp     ] %zu patches with the cusp's neighbours in front, %zu without; worst quad %.3f\n",
+              split.patches.size(), alone.patches.size(), summarize_quality(mesh, kUp).scaled_jacobian.min);
+}
+
 TEST(FaceDecomposition, OGridOfARingIsTwoMappedHalves) {
   // A 24-edge square around a 16-edge circle: every rim place gives two four-sided
   // halves, outer piece opposite rim piece.

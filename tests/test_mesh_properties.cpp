@@ -134,6 +134,27 @@ TEST(MeshProperties, GivenCornersThatLeaveAnInvertedQuadGiveWayToSearchedOnes) {
   EXPECT_FALSE(mesh_boundary_region(fine.loop, MeshOptions{}, normal, true, false).corner_search);
 }
 
+TEST(MeshProperties, AFoldedCuspTriangleIsDecomposedWhereNoCornersHelp) {
+  // Generated case 5311 (a non-convex triangle with a cusp) keeps inverted quads with
+  // its given and with every searched corner set; the boundary route then meshes it
+  // by the face decomposition, whose pieces along the cusp are split for the
+  // neighbour that runs back along them, and keeps that mesh, which has none.
+  const testing::GeneratedCase cusp = testing::generated_case(5311);
+  Vec3 normal;
+  ASSERT_TRUE(planar_normal(cusp.loop.points, normal));
+  const int n = static_cast<int>(cusp.loop.points.size());
+  const CornerSearchResult searched = mesh_boundary_best_corners(cusp.loop, MeshOptions{}, normal, true);
+  ASSERT_GT(summarize_quality(searched.mesh, normal).inverted, 0);
+  const BoundaryRegionMesh region = mesh_boundary_region(cusp.loop, MeshOptions{}, normal, true, false);
+  EXPECT_TRUE(region.decomposed);
+  EXPECT_EQ(region.summary.inverted, 0);
+  EXPECT_EQ(check_disk_mesh(region.mesh, n), "");
+  for (int p = 0; p < n; ++p) ASSERT_TRUE(region.mesh.nodes[p] == cusp.loop.points[p]);
+  std::printf("[ cusp     ] case 5311: worst scaled Jacobian %.3f decomposed (%s), %.3f with the best corners\n",
+              region.summary.scaled_jacobian.min, region.mesh.template_tree.c_str(),
+              summarize_quality(searched.mesh, normal).scaled_jacobian.min);
+}
+
 TEST(MeshProperties, EveryCornerSetOfSmallLoopsMeshesOrIsRefused) {
   // All 2, 3 and 4 corner sets of the generated loops of at most 12 points: each
   // meshes into a valid mesh or is refused with an InputError; never an internal

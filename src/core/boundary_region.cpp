@@ -8,6 +8,7 @@
 #include "core/corner_search.h"
 #include "core/elapsed.h"
 #include "core/mesh_validation.h"
+#include "core/planar_loop_decomposition.h"
 #include "core/smoothing.h"
 
 namespace tquad {
@@ -85,6 +86,21 @@ BoundaryRegionMesh mesh_boundary_region(const BoundaryLoop& loop, const MeshOpti
       out.corner_search->after_inverted = true;
       keep_quality(out, std::move(found_quality));
       stage_done("check");
+    }
+  }
+  if (out.summary.inverted > 0 && plane_normal) {
+    std::optional<QuadMesh> decomposed = mesh_planar_loop_decomposed(loop, *plane_normal, options);
+    if (decomposed) {
+      if (smooth) smooth_region(*decomposed, boundary_points, plane_normal);
+      MeasuredQuality decomposed_quality = measure(*decomposed, plane_normal);
+      stage_done("mesh");
+      if (decomposed_quality.summary.inverted < out.summary.inverted) {
+        check_mesh(*decomposed, boundary_points);
+        out.mesh = std::move(*decomposed);
+        out.decomposed = true;
+        keep_quality(out, std::move(decomposed_quality));
+        stage_done("check");
+      }
     }
   }
   return out;

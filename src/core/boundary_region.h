@@ -7,11 +7,13 @@
 //
 // Where the given corners' mesh still has an inverted quad after that, the corner
 // search runs too and its mesh is kept if it has fewer inverted quads: a valid mesh
-// with other corners serves a user better than a folded one with theirs. Measured
-// on the generated property cases: of the 12 of 12,000 boundaries whose smoothed
-// mesh kept an inverted quad (5 mildly non-convex, 7 curved), 10 have none with the
-// searched corners; the two left have a cusp (a corner of nearly 0 degrees between
-// two bent sides).
+// with other corners serves a user better than a folded one with theirs; then, for
+// a planar loop, the face decomposition (planar_loop_decomposition.h), kept on the
+// same terms. Measured on the generated property cases: of the 12 of 12,000
+// boundaries whose smoothed mesh kept an inverted quad (5 mildly non-convex, 7
+// curved), 10 have none with the searched corners, and one more (case 5311, a
+// triangle with a cusp) with the decomposition; the one left (case 1555) has a cusp
+// next to a side bent inwards by 21 degrees, which is no coarse vertex.
 #pragma once
 
 #include <map>
@@ -29,6 +31,7 @@ namespace tquad {
 struct BoundaryRegionMesh {
   QuadMesh mesh;
   std::optional<CornerSearch> corner_search;  // when the search ran
+  bool decomposed = false;                    // meshed by mesh_planar_loop_decomposed
   PerQuadQuality quality;                     // each quad's, signed by the plane's normal or its own
   QualitySummary summary;                     // of `quality`
   // Wall time of each stage: "mesh" (the templates; the corner search, with its

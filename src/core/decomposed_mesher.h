@@ -23,8 +23,10 @@ QuadMesh mesh_decomposed_domain(const PlanarDomain& domain, const FaceDecomposit
                                 const std::vector<int>& cut_counts, const MeshOptions& options,
                                 PatchMeshMemo* memo = nullptr);
 
-// Rings the holes (hole_rings.h), decomposes the rest, assigns the cut counts from
-// the target edge length `size`, and meshes.
-QuadMesh mesh_planar_domain(const PlanarDomain& domain, double size, const MeshOptions& options = {});
+// Rings the holes (hole_rings.h), decomposes the rest (with `decomposition`, and
+// without its sliver pairs too when it merged any: the better kept), assigns the cut
+// counts from the target edge length `size`, and meshes.
+QuadMesh mesh_planar_domain(const PlanarDomain& domain, double size, const MeshOptions& options = {},
+                            const DecompositionOptions& decomposition = {});
 
 }  // namespace tquad

@@ -213,7 +213,8 @@ struct Pairing {
 class Decomposer {
  public:
   Decomposer(const PlanarDomain& domain, const DecompositionOptions& options)
-      : d_(domain), merge_sliver_pairs_(options.merge_sliver_pairs) {
+      : d_(domain), merge_sliver_pairs_(options.merge_sliver_pairs),
+        neighbours_across_corners_(options.neighbours_across_corners) {
     for (const DomainLoop& loop : d_.loops) coarsening_.emplace_back(loop);
     join_thin_junctions();
     split_by_feature_size();
@@ -228,6 +229,7 @@ class Decomposer {
     constexpr int kRounds = 12;
     FaceDecomposition out;
     out.corner_splits = corner_splits_;
+    out.neighbour_splits = neighbour_splits_;
     std::vector<std::set<int>> coarse;
     for (const LoopCoarsening& c : coarsening_) coarse.push_back(c.coarse());
     for (int round = 0;; ++round) {
@@ -383,6 +385,9 @@ class Decomposer {
   // triangulation has no long slivers (a plate's long side next to a row of holes).
   void split_by_feature_size() {
     constexpr double kLongerThanGap = 2.0;
+    // DecompositionOptions::neighbours_across_corners: within this of the piece's
+    // inward normal at its middle (a 60-degree corner's neighbour stays out).
+    constexpr double kInFront = 30.0 * kDegree;
     for (int pass = 0; pass < 8; ++pass) {
       bool changed = false;
       for (int l = 0; l < d_.loop_count(); ++l) {
@@ -398,14 +403,25 @@ class Decomposer {
           // Points of this piece and its two neighbours are not "in front" of it.
           const int skip_from = pieces[wrap(k - 1, count)].first, skip_to = pieces[(k + 1) % count].second;
           const int skipped = inner_count(skip_from, skip_to, n) + 2;  // a loop has 3+ coarse vertices
-          double gap = INFINITY;
+          double gap = INFINITY, neighbour_gap = INFINITY;
           for (int m = 0; m < d_.loop_count(); ++m) {
             for (int i = 0; i < loop_size(m); ++i) {
-              if (m == l && wrap(i - skip_from, n) < skipped) continue;
+              if (m == l && wrap(i - skip_from, n) < skipped) {
+                // A neighbour's point straight in front (across a sharp corner) counts
+                // when asked; never one of this piece's own.
+                if (!neighbours_across_corners_ || wrap(i - first, n) <= inner + 1) continue;
+                const Vec3 along = point(l, last) - point(l, first);
+                if (angle_between(Vec3{-along.y, along.x, 0}, point(m, i) - middle) > kInFront) continue;
+                neighbour_gap = std::min(neighbour_gap, distance(middle, point(m, i)));
+                continue;
+              }
               gap = std::min(gap, distance(middle, point(m, i)));
             }
           }
-          if (chord > kLongerThanGap * gap) changed = coarsening_[l].split(first, last, 2) || changed;
+          if (chord > kLongerThanGap * std::min(gap, neighbour_gap) && coarsening_[l].split(first, last, 2)) {
+            changed = true;
+            if (chord <= kLongerThanGap * gap) ++neighbour_splits_;
+          }
         }
       }
       if (!changed) break;
@@ -615,6 +631,8 @@ class Decomposer {
   int corner_splits_ = 0;
   const PlanarDomain& d_;
   bool merge_sliver_pairs_ = true;
+  bool neighbours_across_corners_ = false;
+  int neighbour_splits_ = 0;
   std::vector<LoopCoarsening> coarsening_;
 };
 

@@ -161,35 +161,24 @@ class FaceChart {
   std::vector<Vec3> uv_;
 };
 
-// The face meshed on its decomposition with `options`; nothing when `changed` says
-// that the options changed nothing (the same decomposition as the plain one).
-std::optional<FaceMeshResult> mesh_variant(const FaceChart& chart, const DecompositionOptions& variant,
-                                           int (*changed)(const FaceDecomposition&), double edge_size,
-                                           const MeshOptions& options, PatchMeshMemo& memo) {
-  const FaceDecomposition decomposition = decompose_domain(chart.domain(), variant);
-  if (changed(decomposition) == 0) return std::nullopt;
-  return chart.mesh(decomposition, edge_size, options, &memo);
-}
-
 // The variants of the plain decomposition that may mesh a face better
-// (DecompositionOptions): corner ears cleared; sliver pairs left as triangles.
-std::vector<std::optional<FaceMeshResult>> mesh_variants(const FaceChart& chart, int plain_sliver_pairs,
-                                                         double edge_size, const MeshOptions& options,
-                                                         PatchMeshMemo& memo) {
-  std::vector<std::optional<FaceMeshResult>> out;
-  DecompositionOptions cleared;
-  cleared.clear_corner_ears = true;
-  try {
-    out.push_back(mesh_variant(chart, cleared, [](const FaceDecomposition& d) { return d.corner_splits; }, edge_size,
-                               options, memo));
-  } catch (const std::exception&) {  // the plain decomposition's mesh stays, as in face_route
-  }
-  if (plain_sliver_pairs > 0) {
-    DecompositionOptions unmerged;
-    unmerged.merge_sliver_pairs = false;
+// (DecompositionOptions): corner ears cleared; sliver pairs left as triangles, and no
+// pieces split for their neighbours across corners, where the plain one has any
+// (`plain`: nothing when it could not be made).
+std::vector<FaceMeshResult> mesh_variants(const FaceChart& chart, const std::optional<FaceDecomposition>& plain,
+                                          double edge_size, const MeshOptions& options, PatchMeshMemo& memo) {
+  std::vector<DecompositionOptions> variants;
+  variants.emplace_back().clear_corner_ears = true;
+  if (!plain || plain->sliver_pairs > 0) variants.emplace_back().merge_sliver_pairs = false;
+  if (!plain || plain->neighbour_splits > 0) variants.emplace_back().neighbours_across_corners = false;
+  std::vector<FaceMeshResult> out;
+  for (const DecompositionOptions& variant : variants) {
     try {
-      out.push_back(mesh_variant(chart, unmerged, [](const FaceDecomposition&) { return 1; }, edge_size, options, memo));
-    } catch (const std::exception&) {
+      const FaceDecomposition decomposition = decompose_domain(chart.domain(), variant);
+      // Cleared corner ears that split no piece give the plain decomposition again.
+      if (variant.clear_corner_ears && decomposition.corner_splits == 0) continue;
+      out.push_back(chart.mesh(decomposition, edge_size, options, &memo));
+    } catch (const std::exception&) {  // the plain decomposition's mesh stays, as in face_route
     }
   }
   return out;
@@ -204,16 +193,15 @@ FaceMeshResult mesh_face_decomposed(const TopoDS_Face& face, int face_index, con
   std::optional<FaceMeshResult> best;
   PatchMeshMemo patches;  // the decompositions differ only here and there
   std::string plain_problem;
-  int sliver_pairs = 1;  // unknown until the plain decomposition is made: try without them
+  std::optional<FaceDecomposition> plain;
   try {
-    const FaceDecomposition plain = decompose_domain(chart.domain());
-    sliver_pairs = plain.sliver_pairs;
-    best = chart.mesh(plain, edge_size, options, &patches);
+    plain = decompose_domain(chart.domain());
+    best = chart.mesh(*plain, edge_size, options, &patches);
   } catch (const InputError& e) {
     plain_problem = e.what();  // a variant below may still mesh the face
   }
-  for (std::optional<FaceMeshResult>& variant : mesh_variants(chart, sliver_pairs, edge_size, options, patches)) {
-    if (variant && (!best || better_face_mesh(*variant, *best))) best = std::move(variant);
+  for (FaceMeshResult& variant : mesh_variants(chart, plain, edge_size, options, patches)) {
+    if (!best || better_face_mesh(variant, *best)) best = std::move(variant);
   }
   if (!best) throw InputError(chart.name() + " (decomposed into patches): " + plain_problem);
   return std::move(*best);
