@@ -11,9 +11,8 @@
 // a planar loop, the face decomposition (planar_loop_decomposition.h), kept on the
 // same terms. Measured on the generated property cases: of the 12 of 12,000
 // boundaries whose smoothed mesh kept an inverted quad (5 mildly non-convex, 7
-// curved), 10 have none with the searched corners, and one more (case 5311, a
-// triangle with a cusp) with the decomposition; the one left (case 1555) has a cusp
-// next to a side bent inwards by 21 degrees, which is no coarse vertex.
+// curved), 10 have none with the searched corners, and the two left (cases 5311 and
+// 1555, triangles with a cusp) none with the decomposition.
 #pragma once
 
 #include <map>

@@ -53,13 +53,15 @@ int inner_count(int first, int last, int n) { return first == last ? n - 1 : wra
 // The coarse vertices of one loop (sorted point indices).
 class LoopCoarsening {
  public:
-  explicit LoopCoarsening(const DomainLoop& loop) : points_(loop.points) {
+  // `reflex_turn`: DecompositionOptions::reflex_point_turn.
+  LoopCoarsening(const DomainLoop& loop, double reflex_turn) : points_(loop.points) {
     const int n = size();
     turns_.resize(n);
     for (int i = 0; i < n; ++i) turns_[i] = turn_at(points_, i);
     for (int i = 0; i < n; ++i) {
       const bool vertex = !loop.vertex.empty() && loop.vertex[i];
-      if ((vertex && std::abs(turns_[i]) >= kSharpVertexTurn) || std::abs(turns_[i]) >= kSharpPointTurn) {
+      if ((vertex && std::abs(turns_[i]) >= kSharpVertexTurn) || std::abs(turns_[i]) >= kSharpPointTurn ||
+          turns_[i] <= -reflex_turn) {
         coarse_.insert(i);
       }
     }
@@ -215,7 +217,7 @@ class Decomposer {
   Decomposer(const PlanarDomain& domain, const DecompositionOptions& options)
       : d_(domain), merge_sliver_pairs_(options.merge_sliver_pairs),
         neighbours_across_corners_(options.neighbours_across_corners) {
-    for (const DomainLoop& loop : d_.loops) coarsening_.emplace_back(loop);
+    for (const DomainLoop& loop : d_.loops) coarsening_.emplace_back(loop, options.reflex_point_turn * kDegree);
     join_thin_junctions();
     split_by_feature_size();
     if (options.clear_corner_ears) corner_splits_ = clear_corner_ears();

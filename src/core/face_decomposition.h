@@ -96,6 +96,12 @@ struct DecompositionOptions {
   // with it). It also moves cuts elsewhere (part.step face 18 at D/100: 0.028 to
   // 0.012), so callers mesh both and keep the better.
   bool neighbours_across_corners = true;
+  // A boundary point turning inwards (a reflex point) by at least this many degrees
+  // is a coarse vertex, CAD vertex or not. 60, as for any point, on faces: 20 there
+  // moved as1-tu-203.stp's worst quad at D/50 from 0.39 to 0.30. The boundary
+  // route's fallback (planar_loop_decomposition.h) takes 20: a side bent inwards by
+  // 21 degrees next to a cusp folded the one patch it left (generated case 1555).
+  double reflex_point_turn = 60.0;
 };
 
 // Throws InputError, naming the loop and point or segment, when a loop has fewer than

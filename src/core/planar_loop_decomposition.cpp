@@ -7,6 +7,12 @@
 
 namespace tquad {
 
+// Where the templates folded a loop, its sides bent inwards are where: a reflex point
+// of 20 degrees or more becomes a patch corner (DecompositionOptions::reflex_point_turn;
+// measured on the generated property cases: 1 of 3,000 mildly non-convex loops kept
+// an inverted quad with 60, none with 10, 15 or 20).
+constexpr double kReflexPointTurn = 20.0;
+
 std::optional<QuadMesh> mesh_planar_loop_decomposed(const BoundaryLoop& loop, const Vec3& unit_normal,
                                                     const MeshOptions& options) {
   const std::size_t n = loop.points.size();
@@ -25,7 +31,9 @@ std::optional<QuadMesh> mesh_planar_loop_decomposed(const BoundaryLoop& loop, co
   QuadMesh mesh;
   try {
     // The cuts get the boundary's mean spacing.
-    mesh = mesh_planar_domain(domain, perimeter / static_cast<double>(n), options);
+    DecompositionOptions decomposition;
+    decomposition.reflex_point_turn = kReflexPointTurn;
+    mesh = mesh_planar_domain(domain, perimeter / static_cast<double>(n), options, decomposition);
   } catch (const InputError&) {
     return std::nullopt;
   }
