@@ -21,10 +21,21 @@ struct Side {
   int segments = 0;
 };
 
+// The longest edge of a side that is in no chain; -1 when all are.
+int longest_free_edge(const Side& side, const std::vector<int>& chain_of, const std::vector<int>& segments) {
+  int chosen = -1;
+  for (int e : side.edges) {
+    if (chain_of[e] < 0 && (chosen < 0 || segments[e] > segments[chosen])) chosen = e;
+  }
+  return chosen;
+}
+
 }  // namespace
 
 int balance_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& segments,
-                           const std::vector<std::vector<int>>& chains, EdgeSpacings* kept) {
+                           const std::vector<std::vector<int>>& chains, EdgeSpacings* kept,
+                           std::vector<std::pair<int, int>>* paired) {
+  std::vector<char> in_pair(index.edge_count(), 0);
   std::vector<int> chain_of(index.edge_count(), -1);
   for (std::size_t c = 0; c < chains.size(); ++c) for (int e : chains[c]) chain_of[e] = static_cast<int>(c);
   // Only a face with two or more one-segment edges can be such a band; its corners
@@ -76,23 +87,36 @@ int balance_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshe
       if (sides[k + 1].segments > kNarrowBand || sides[(k + 3) % 4].segments > kNarrowBand) continue;
       const Side& a = sides[k];
       const Side& c = sides[k + 2];
-      if (a.segments == c.segments) continue;
-      const Side& shorter = a.segments < c.segments ? a : c;
-      // The longest edge of the shorter side takes the difference: a free edge alone,
-      // or else a chained edge with its whole chain (whose faces stay mapped).
-      int chosen = -1;
-      for (int e : shorter.edges) {
-        if (chain_of[e] < 0 && (chosen < 0 || segments[e] > segments[chosen])) chosen = e;
+      const bool unequal = a.segments != c.segments;
+      if (unequal) {
+        const Side& shorter = a.segments < c.segments ? a : c;
+        // The longest edge of the shorter side takes the difference: a free edge
+        // alone, or else a chained edge with its whole chain (whose faces stay mapped).
+        int chosen = longest_free_edge(shorter, chain_of, segments);
+        if (chosen < 0) {
+          for (int e : shorter.edges) if (chosen < 0 || segments[e] > segments[chosen]) chosen = e;
+        }
+        if (chosen < 0) continue;
+        const int difference = std::abs(a.segments - c.segments);
+        if (chain_of[chosen] < 0) segments[chosen] += difference;
+        else for (int e : chains[chain_of[chosen]]) segments[e] += difference;
+        ++balanced;
       }
-      if (chosen < 0) {
-        for (int e : shorter.edges) if (chosen < 0 || segments[e] > segments[chosen]) chosen = e;
+      // Ends of different counts (1 and 2) leave the band odd, and the parity fix
+      // would change some edge of it: the shorter end's longest free edge takes the
+      // difference, and the band is even and mapped.
+      const Side& end1 = sides[k + 1];
+      const Side& end2 = sides[(k + 3) % 4];
+      if (end1.segments != end2.segments) {
+        const int e = longest_free_edge(end1.segments < end2.segments ? end1 : end2, chain_of, segments);
+        if (e >= 0) segments[e] += std::abs(end1.segments - end2.segments);
       }
-      if (chosen < 0) continue;
-      const int difference = std::abs(a.segments - c.segments);
-      if (chain_of[chosen] < 0) segments[chosen] += difference;
-      else for (int e : chains[chain_of[chosen]]) segments[e] += difference;
-      ++balanced;
-      break;
+      const int ea = longest_free_edge(a, chain_of, segments), ec = longest_free_edge(c, chain_of, segments);
+      if (paired && ea >= 0 && ec >= 0 && ea != ec && !in_pair[ea] && !in_pair[ec]) {
+        paired->push_back({ea, ec});
+        in_pair[ea] = in_pair[ec] = 1;
+      }
+      if (unequal) break;
     }
   }
   return balanced;

@@ -55,7 +55,8 @@ double edge_goal(const std::vector<double>& lengths, double size, const std::vec
 std::vector<IntervalChange> make_faces_even(const ShapeIndex& index, const std::vector<char>& meshed,
                                             const std::vector<double>& lengths, double size,
                                             std::vector<int>& segments, const std::vector<int>& minimum,
-                                            const std::vector<std::vector<int>>& chains) {
+                                            const std::vector<std::vector<int>>& chains,
+                                            const std::vector<std::pair<int, int>>& paired) {
   const int edges = index.edge_count();
   const std::vector<int> before = segments;
   const std::vector<int> floor = minimum.empty() ? std::vector<int>(edges, 1) : minimum;
@@ -65,6 +66,11 @@ std::vector<IntervalChange> make_faces_even(const ShapeIndex& index, const std::
   for (const std::vector<int>& chain : chains) {
     for (int e : chain) chained[e] = 1;
     units.push_back(edge_unit(index, meshed, chain));
+  }
+  for (const auto& [a, b] : paired) {
+    if (chained[a] || chained[b]) continue;
+    chained[a] = chained[b] = 1;
+    units.push_back(edge_unit(index, meshed, {a, b}));
   }
   for (int e = 0; e < edges; ++e) {
     if (chained[e] || segments[e] <= 0 || BRep_Tool::Degenerated(index.edge(e))) continue;
@@ -157,10 +163,20 @@ IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector
   std::vector<double> goals(edges, 1.0);
   for (int e = 0; e < edges; ++e) if (segments[e] > 0) goals[e] = goal(e);
   report.balanced_rings = balance_rings(wires, meshed, goals, floors, segments, chains);
-  report.balanced_bands = balance_narrow_bands(index, meshed, segments, chains, kept);
+  std::vector<std::pair<int, int>> band_sides;
+  report.balanced_bands = balance_narrow_bands(index, meshed, segments, chains, kept, &band_sides);
   // Faces left odd are made even by changing whole chains (which keeps their faces
-  // mapped) or single edges.
-  make_faces_even(index, meshed, lengths, size, segments, floor, chains);
+  // mapped), a band's two long sides together (likewise: TrimmedSurface.brep's band,
+  // balanced to 26 and 26, had its longer side raised to 27 for parity, which its
+  // short end could give) or single edges; without the band pairs where that leaves
+  // a face odd.
+  const std::vector<int> balanced = segments;
+  try {
+    make_faces_even(index, meshed, lengths, size, segments, floor, chains, band_sides);
+  } catch (const InputError&) {
+    segments = balanced;
+    make_faces_even(index, meshed, lengths, size, segments, floor, chains);
+  }
   // Disks around a pole want a multiple of 4 on their rim (pole_rims.h); steps of 2
   // keep the parities just made.
   report.quartered_pole_rims = quarter_pole_rims(index, meshed, goals, floors, segments, chains);

@@ -35,11 +35,14 @@ std::vector<IntervalChange> assign_even_intervals(const ShapeIndex& index,
                                                   const std::vector<int>& minimum = {});
 
 // As assign_even_intervals, where each of `chains` (edges kept equal) changes as one
-// unit: it flips the parity of the faces holding an odd number of its edges.
+// unit: it flips the parity of the faces holding an odd number of its edges; and
+// each of `paired` (two edges of different chains or none, the long sides of a
+// band) changes as one unit too, instead of each edge on its own.
 std::vector<IntervalChange> make_faces_even(const ShapeIndex& index, const std::vector<char>& meshed,
                                             const std::vector<double>& lengths, double size,
                                             std::vector<int>& segments, const std::vector<int>& minimum,
-                                            const std::vector<std::vector<int>>& chains);
+                                            const std::vector<std::vector<int>>& chains,
+                                            const std::vector<std::pair<int, int>>& paired = {});
 
 // Sum of the edge counts along a face's wires (seams twice, degenerate edges 0).
 int face_boundary_total(const ShapeIndex& index, int face, const std::vector<int>& segments);

@@ -329,6 +329,31 @@ TEST(ShapeMeshing, BandOneQuadWideGetsEqualLongSides) {
   EXPECT_EQ(result.inverted, 0);
 }
 
+TEST(ShapeMeshing, BandWithUnequalEndsGetsEqualEndsToo) {
+  // The quarter ring above with one end in two edges (1 + 1 segments at size 1.2)
+  // and the other one segment: after its long sides are made equal (14 and 14) the
+  // total is odd, and the parity fix used to change a long side (its summed goal is
+  // the largest), which left the band unbalanced and its mesh a transition. The band
+  // balance gives the one-segment end a second segment instead, and the band is a
+  // mapped grid two quads across.
+  const gp_Ax2 axis(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1));
+  BRepBuilderAPI_MakeWire wire;
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(9.2, 0, 0), gp_Pnt(9.85, 0, 0)).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(9.85, 0, 0), gp_Pnt(10.5, 0, 0)).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 10.5), 0, M_PI / 2).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 10.5, 0), gp_Pnt(0, 9.2, 0)).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 9.2), 0, M_PI / 2).Edge());
+  ASSERT_TRUE(wire.IsDone());
+  const TopoDS_Face band = BRepBuilderAPI_MakeFace(wire.Wire()).Face();
+  ShapeMeshOptions options;
+  options.size = 1.2;
+  const ShapeMeshResult result = mesh_shape(band, options);
+  ASSERT_EQ(result.mesh.faces.size(), 1u);
+  EXPECT_EQ(result.mesh.faces[0].template_tree, "T0");
+  EXPECT_EQ(result.mesh.quads.size(), 28u) << "two quads per segment of the long sides";
+  EXPECT_EQ(result.inverted, 0);
+}
+
 TEST(ShapeMeshing, IgesInput) {
   // The bracket written as IGES (BRep mode, which keeps faces and shared edges) reads
   // back and meshes every face.
