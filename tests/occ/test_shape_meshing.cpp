@@ -5,6 +5,8 @@
 // node; every refused face with a reason. Prints a table of faces meshed and refused per file.
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -304,54 +306,54 @@ TEST(ShapeMeshing, SharpConeTipsAreMetByTwoQuads) {
   }
 }
 
-TEST(ShapeMeshing, BandOneQuadWideGetsEqualLongSides) {
-  // A quarter ring 1.3 wide between radii 9.2 and 10.5, its outer arc in two edges
-  // (so the face has five edges and no chain of opposite edges): at size 1.2 the
-  // outer arc rounds to 7 + 7 segments, the inner to 12, the ends to 1 (an even
-  // total: no parity change comes to help). One quad across has no room for a
-  // transition, so the interval assignment must make the long sides equal
-  // (band_balance.h), and the face is a mapped grid.
+// A quarter ring between radii 9.2 and 10.5 around the z axis, meshed alone at size
+// 1.2; `split_outer`: the outer arc in two edges at 45 degrees, else the end on the x
+// axis in two edges at its middle. The face has five edges either way, so no chain
+// of opposite edges makes it mapped.
+ShapeMeshResult mesh_quarter_ring_band(bool split_outer) {
   const gp_Ax2 axis(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1));
   BRepBuilderAPI_MakeWire wire;
-  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(9.2, 0, 0), gp_Pnt(10.5, 0, 0)).Edge());
-  wire.Add(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 10.5), 0, M_PI / 4).Edge());
-  wire.Add(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 10.5), M_PI / 4, M_PI / 2).Edge());
+  if (split_outer) {
+    wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(9.2, 0, 0), gp_Pnt(10.5, 0, 0)).Edge());
+    wire.Add(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 10.5), 0, M_PI / 4).Edge());
+    wire.Add(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 10.5), M_PI / 4, M_PI / 2).Edge());
+  } else {
+    wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(9.2, 0, 0), gp_Pnt(9.85, 0, 0)).Edge());
+    wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(9.85, 0, 0), gp_Pnt(10.5, 0, 0)).Edge());
+    wire.Add(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 10.5), 0, M_PI / 2).Edge());
+  }
   wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 10.5, 0), gp_Pnt(0, 9.2, 0)).Edge());
   wire.Add(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 9.2), 0, M_PI / 2).Edge());
-  ASSERT_TRUE(wire.IsDone());
-  const TopoDS_Face band = BRepBuilderAPI_MakeFace(wire.Wire()).Face();
+  if (!wire.IsDone()) throw std::runtime_error("the quarter ring's wire is not closed");
   ShapeMeshOptions options;
   options.size = 1.2;
-  const ShapeMeshResult result = mesh_shape(band, options);
+  return mesh_shape(BRepBuilderAPI_MakeFace(wire.Wire()).Face(), options);
+}
+
+void expect_one_mapped_face(const ShapeMeshResult& result, std::size_t quads) {
   ASSERT_EQ(result.mesh.faces.size(), 1u);
   EXPECT_EQ(result.mesh.faces[0].template_tree, "T0");
-  EXPECT_EQ(result.mesh.quads.size(), 14u) << "one quad per segment of the longer side";
+  EXPECT_EQ(result.mesh.quads.size(), quads);
   EXPECT_EQ(result.inverted, 0);
 }
 
+TEST(ShapeMeshing, BandOneQuadWideGetsEqualLongSides) {
+  // The quarter ring 1.3 wide with its outer arc in two edges: at size 1.2 the outer
+  // arc rounds to 7 + 7 segments, the inner to 12, the ends to 1 (an even total: no
+  // parity change comes to help). One quad across has no room for a transition, so
+  // the interval assignment must make the long sides equal (band_balance.h), and the
+  // face is a mapped grid.
+  expect_one_mapped_face(mesh_quarter_ring_band(true), 14);  // a quad per segment of the longer side
+}
+
 TEST(ShapeMeshing, BandWithUnequalEndsGetsEqualEndsToo) {
-  // The quarter ring above with one end in two edges (1 + 1 segments at size 1.2)
-  // and the other one segment: after its long sides are made equal (14 and 14) the
-  // total is odd, and the parity fix used to change a long side (its summed goal is
-  // the largest), which left the band unbalanced and its mesh a transition. The band
-  // balance gives the one-segment end a second segment instead, and the band is a
-  // mapped grid two quads across.
-  const gp_Ax2 axis(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1));
-  BRepBuilderAPI_MakeWire wire;
-  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(9.2, 0, 0), gp_Pnt(9.85, 0, 0)).Edge());
-  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(9.85, 0, 0), gp_Pnt(10.5, 0, 0)).Edge());
-  wire.Add(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 10.5), 0, M_PI / 2).Edge());
-  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 10.5, 0), gp_Pnt(0, 9.2, 0)).Edge());
-  wire.Add(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 9.2), 0, M_PI / 2).Edge());
-  ASSERT_TRUE(wire.IsDone());
-  const TopoDS_Face band = BRepBuilderAPI_MakeFace(wire.Wire()).Face();
-  ShapeMeshOptions options;
-  options.size = 1.2;
-  const ShapeMeshResult result = mesh_shape(band, options);
-  ASSERT_EQ(result.mesh.faces.size(), 1u);
-  EXPECT_EQ(result.mesh.faces[0].template_tree, "T0");
-  EXPECT_EQ(result.mesh.quads.size(), 28u) << "two quads per segment of the long sides";
-  EXPECT_EQ(result.inverted, 0);
+  // The quarter ring with one end in two edges (1 + 1 segments) and the other one
+  // segment: after its long sides are made equal (14 and 14) the total is odd, and
+  // the parity fix used to change a long side (its summed goal is the largest),
+  // which left the band unbalanced and its mesh a transition. The band balance gives
+  // the one-segment end a second segment instead (and the parity fix changes both
+  // long sides or neither), and the band is a mapped grid two quads across.
+  expect_one_mapped_face(mesh_quarter_ring_band(false), 28);  // two quads per segment of the long sides
 }
 
 TEST(ShapeMeshing, IgesInput) {
