@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 #include "core/cut_intervals.h"
 #include "core/hole_rings.h"
@@ -128,22 +127,15 @@ QuadMesh mesh_planar_domain(const PlanarDomain& domain, double size, const MeshO
   check_planar_domain(domain);
   const RingedDomain ringed = ring_holes(domain);
   PatchMeshMemo memo;
-  const auto mesh_with = [&](const DecompositionOptions& variant, FaceDecomposition* made) {
-    const FaceDecomposition d = decompose_domain(ringed.inner, variant);
-    if (made) *made = d;
+  const auto mesh_of = [&](const FaceDecomposition& d) {
     return mesh_decomposed_domain(ringed.inner, d, assign_cut_intervals(ringed.inner, d, size), options, &memo);
   };
-  FaceDecomposition plain;
-  QuadMesh inner = mesh_with(decomposition, &plain);
-  // The options that change the patches here and there, better or worse
-  // (DecompositionOptions): the domain meshed without each that did something, the
-  // best kept. Measured on the generated domains of the tests: with sliver pairs
-  // alone, 1 of 5,040 meshes inverted and 47 with collapsed quads, against 0 and 32.
-  std::vector<DecompositionOptions> variants;
-  if (plain.sliver_pairs > 0) (variants.emplace_back(decomposition)).merge_sliver_pairs = false;
-  if (plain.neighbour_splits > 0) (variants.emplace_back(decomposition)).neighbours_across_corners = false;
-  for (const DecompositionOptions& variant : variants) {
-    QuadMesh other = mesh_with(variant, nullptr);
+  const FaceDecomposition plain = decompose_domain(ringed.inner, decomposition);
+  QuadMesh inner = mesh_of(plain);
+  // Measured on the generated domains of the tests: with sliver pairs alone, 1 of
+  // 5,040 meshes inverted and 47 with collapsed quads, against 0 and 32.
+  for (const DecompositionOptions& variant : decomposition_variants(decomposition, &plain)) {
+    QuadMesh other = mesh_of(decompose_domain(ringed.inner, variant));
     if (better_planar_mesh(other, inner)) inner = std::move(other);
   }
   return join_rings(domain, ringed, inner);

@@ -24,8 +24,9 @@ QuadMesh mesh_decomposed_domain(const PlanarDomain& domain, const FaceDecomposit
                                 PatchMeshMemo* memo = nullptr);
 
 // Rings the holes (hole_rings.h), decomposes the rest (with `decomposition`, and
-// without its sliver pairs too when it merged any: the better kept), assigns the cut
-// counts from the target edge length `size`, and meshes.
+// with its decomposition_variants too: the mesh with the fewest inverted, then
+// collapsed quads, then the best worst corner kept), assigns the cut counts from the
+// target edge length `size`, and meshes.
 QuadMesh mesh_planar_domain(const PlanarDomain& domain, double size, const MeshOptions& options = {},
                             const DecompositionOptions& decomposition = {});
 

@@ -215,8 +215,7 @@ struct Pairing {
 class Decomposer {
  public:
   Decomposer(const PlanarDomain& domain, const DecompositionOptions& options)
-      : d_(domain), merge_sliver_pairs_(options.merge_sliver_pairs),
-        neighbours_across_corners_(options.neighbours_across_corners) {
+      : d_(domain), options_(options) {
     for (const DomainLoop& loop : d_.loops) coarsening_.emplace_back(loop, options.reflex_point_turn * kDegree);
     join_thin_junctions();
     split_by_feature_size();
@@ -262,8 +261,7 @@ class Decomposer {
       if (last_resort) {
         if (!blocked.empty()) throw InputError("the boundary cannot be cut into patches: a cut leaves the domain");
         const Pairing pairing = pair_triangles(polygon, triangles);
-        build(polygon, pairing.patches, out);
-        out.sliver_pairs = static_cast<int>(pairing.rescued_diagonals.size());
+        build(polygon, pairing, out);
         return out;
       }
       bool added = false;
@@ -278,8 +276,7 @@ class Decomposer {
           }
         }
         if (!added) {
-          build(polygon, pairing.patches, out);
-          out.sliver_pairs = static_cast<int>(pairing.rescued_diagonals.size());
+          build(polygon, pairing, out);
           return out;
         }
       }
@@ -402,6 +399,8 @@ class Decomposer {
           if (inner < 1) continue;
           const Vec3& middle = point(l, wrap(first + (inner + 1) / 2, n));
           const double chord = distance(point(l, first), point(l, last));
+          const Vec3 along = point(l, last) - point(l, first);
+          const Vec3 inward{-along.y, along.x, 0};  // the domain lies to the left of its loops
           // Points of this piece and its two neighbours are not "in front" of it.
           const int skip_from = pieces[wrap(k - 1, count)].first, skip_to = pieces[(k + 1) % count].second;
           const int skipped = inner_count(skip_from, skip_to, n) + 2;  // a loop has 3+ coarse vertices
@@ -411,9 +410,8 @@ class Decomposer {
               if (m == l && wrap(i - skip_from, n) < skipped) {
                 // A neighbour's point straight in front (across a sharp corner) counts
                 // when asked; never one of this piece's own.
-                if (!neighbours_across_corners_ || wrap(i - first, n) <= inner + 1) continue;
-                const Vec3 along = point(l, last) - point(l, first);
-                if (angle_between(Vec3{-along.y, along.x, 0}, point(m, i) - middle) > kInFront) continue;
+                if (!options_.neighbours_across_corners || wrap(i - first, n) <= inner + 1) continue;
+                if (angle_between(inward, point(m, i) - middle) > kInFront) continue;
                 neighbour_gap = std::min(neighbour_gap, distance(middle, point(m, i)));
                 continue;
               }
@@ -559,7 +557,7 @@ class Decomposer {
       const bool urgent = needs_pair[users[0]] || needs_pair[users[1]];
       double q = corner_quality(polygon, corners, urgent ? kUrgentPairAngleMin : kPairAngleMin);
       bool rescued = false;
-      if (q <= 0 && merge_sliver_pairs_) {
+      if (q <= 0 && options_.merge_sliver_pairs) {
         // Outside the window, the quadrilateral is still the better patch when its
         // worst corner beats the worst corner of one of its triangles, which a
         // triangle's mesh keeps: two slivers across a thin junction (0.6 degrees)
@@ -589,7 +587,9 @@ class Decomposer {
     return out;
   }
 
-  void build(const CoarsePolygon& polygon, const std::vector<std::vector<int>>& patches, FaceDecomposition& out) const {
+  void build(const CoarsePolygon& polygon, const Pairing& pairing, FaceDecomposition& out) const {
+    const std::vector<std::vector<int>>& patches = pairing.patches;
+    out.sliver_pairs = static_cast<int>(pairing.rescued_diagonals.size());
     // Pieces: one per coarse side on a loop.
     std::map<std::pair<int, int>, int> piece_of;
     for (std::size_t l = 0; l < polygon.points.size(); ++l) {
@@ -632,8 +632,7 @@ class Decomposer {
 
   int corner_splits_ = 0;
   const PlanarDomain& d_;
-  bool merge_sliver_pairs_ = true;
-  bool neighbours_across_corners_ = false;
+  const DecompositionOptions options_;
   int neighbour_splits_ = 0;
   std::vector<LoopCoarsening> coarsening_;
 };
@@ -725,6 +724,17 @@ std::vector<int> side_nodes(const PlanarDomain& domain, const FaceDecomposition&
   std::vector<int> nodes;
   for (int k = 0; k <= piece_segments(domain, piece); ++k) nodes.push_back(offset + (piece.first + k) % n);
   return nodes;
+}
+
+std::vector<DecompositionOptions> decomposition_variants(const DecompositionOptions& used, const FaceDecomposition* made) {
+  std::vector<DecompositionOptions> variants;
+  if (used.merge_sliver_pairs && (!made || made->sliver_pairs > 0)) {
+    variants.emplace_back(used).merge_sliver_pairs = false;
+  }
+  if (used.neighbours_across_corners && (!made || made->neighbour_splits > 0)) {
+    variants.emplace_back(used).neighbours_across_corners = false;
+  }
+  return variants;
 }
 
 FaceDecomposition decompose_domain(const PlanarDomain& domain, const DecompositionOptions& options) {

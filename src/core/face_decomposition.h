@@ -93,7 +93,7 @@ struct DecompositionOptions {
   // runs back along the piece. Without it a loop of three pieces has no point in
   // front of any (all are the piece's or its neighbours'): a crescent or a triangle
   // with a cusp stays one thin patch (t20_data.step at D/50: worst quad 0.022, 0.050
-  // with it). It also moves cuts elsewhere (part.step face 18 at D/100: 0.028 to
+  // with it). It also moves cuts elsewhere (part.step face 19 at D/100: 0.020 to
   // 0.012), so callers mesh both and keep the better.
   bool neighbours_across_corners = true;
   // A boundary point turning inwards (a reflex point) by at least this many degrees
@@ -110,6 +110,12 @@ struct DecompositionOptions {
 // segments meet (a loop crossing itself, a hole crossing or touching another loop),
 // or a hole lies outside the outer loop or inside another hole.
 void check_planar_domain(const PlanarDomain& domain);
+
+// The options worth a second mesh beside a decomposition `made` with `used`: `used`
+// without each of merge_sliver_pairs and neighbours_across_corners that changed it
+// (each can make a face better or worse; callers keep the better mesh). `made`
+// null: the decomposition could not be made, so every such variant.
+std::vector<DecompositionOptions> decomposition_variants(const DecompositionOptions& used, const FaceDecomposition* made);
 
 // Checks the domain (check_planar_domain), then decomposes it.
 FaceDecomposition decompose_domain(const PlanarDomain& domain, const DecompositionOptions& options = {});

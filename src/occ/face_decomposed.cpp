@@ -162,15 +162,13 @@ class FaceChart {
 };
 
 // The variants of the plain decomposition that may mesh a face better
-// (DecompositionOptions): corner ears cleared; sliver pairs left as triangles, and no
-// pieces split for their neighbours across corners, where the plain one has any
-// (`plain`: nothing when it could not be made).
+// (DecompositionOptions): decomposition_variants, and corner ears cleared (`plain`:
+// nothing when it could not be made).
 std::vector<FaceMeshResult> mesh_variants(const FaceChart& chart, const std::optional<FaceDecomposition>& plain,
                                           double edge_size, const MeshOptions& options, PatchMeshMemo& memo) {
-  std::vector<DecompositionOptions> variants;
-  variants.emplace_back().clear_corner_ears = true;
-  if (!plain || plain->sliver_pairs > 0) variants.emplace_back().merge_sliver_pairs = false;
-  if (!plain || plain->neighbour_splits > 0) variants.emplace_back().neighbours_across_corners = false;
+  std::vector<DecompositionOptions> variants(1);
+  variants[0].clear_corner_ears = true;
+  for (const DecompositionOptions& v : decomposition_variants({}, plain ? &*plain : nullptr)) variants.push_back(v);
   std::vector<FaceMeshResult> out;
   for (const DecompositionOptions& variant : variants) {
     try {
