@@ -157,6 +157,62 @@ TEST(FaceDecomposition, ThinFlangeOnAPlateIsCutStraightAcrossItsJunctions) {
   EXPECT_GT(worst, fan_worst + 0.1);
 }
 
+// The mean scaled Jacobian of the quads all of whose nodes lie below y.
+double mean_below(const QuadMesh& mesh, double y) {
+  double sum = 0;
+  int count = 0;
+  const std::vector<double> sj = per_quad_quality(mesh.nodes, mesh.quads, kUp).scaled_jacobian;
+  for (std::size_t q = 0; q < mesh.quads.size(); ++q) {
+    bool below = true;
+    for (NodeId n : mesh.quads[q]) below = below && mesh.nodes[n].y < y;
+    if (below) sum += sj[q], ++count;
+  }
+  return count > 0 ? sum / count : 0.0;
+}
+
+TEST(FaceDecomposition, ThinBandsAreCutStraightAcross) {
+  // part.step face 17 in its chart, one side of it: a block with two flanges 4.8
+  // wide, whose long sides have segments of 8.9 (the rim) and 8.0 (the window's edge).
+  // The feature-size rule places coarse vertices on each side apart from the other's;
+  // crossed, every cut in a flange goes to the nearest point across, leaning by at
+  // most half a segment.
+  PlanarDomain d;
+  d.loops.push_back(segmented_loop({{0, -14.3}, {80, -14.3}, {80, 14.3}, {0, 14.3}, {0, 9.5}, {40, 9.5}, {40, -9.5},
+                                    {0, -9.5}},
+                                   {9, 4, 9, 1, 5, 2, 5, 1}));
+  const FaceDecomposition crossed = decompose_domain(d);
+  DecompositionOptions options;
+  options.cross_thin_bands = false;
+  const FaceDecomposition plain = decompose_domain(d, options);
+  EXPECT_GT(crossed.band_crossings, 0);
+  EXPECT_EQ(plain.band_crossings, 0);
+  // Cuts with both ends in a flange (y within 4.8 of a long side, left of the block),
+  // and the most one of them leans.
+  const auto flange_cuts = [&](const FaceDecomposition& decomposition, double& most_leaning) {
+    int count = 0;
+    most_leaning = 0;
+    for (const CutCurve& cut : decomposition.cuts) {
+      const Vec3 &a = d.loops[0].points[cut.from], &b = d.loops[0].points[cut.to];
+      if (std::max(a.x, b.x) >= 40 || std::abs(a.y) < 9.4 || std::abs(b.y) < 9.4) continue;
+      ++count;
+      most_leaning = std::max(most_leaning, std::abs(a.x - b.x));
+    }
+    return count;
+  };
+  double most = 0, plain_most = 0;
+  EXPECT_GT(flange_cuts(crossed, most), 2);
+  flange_cuts(plain, plain_most);
+  std::printf("[ bands    ] flange cuts lean by %.2f at most crossed, %.2f not\n", most, plain_most);
+  EXPECT_LE(most, 0.5 * 80 / 9);
+  const QuadMesh mesh = mesh_decomposed_domain(d, crossed, assign_cut_intervals(d, crossed, 8.5), MeshOptions{});
+  const QuadMesh leaning = mesh_decomposed_domain(d, plain, assign_cut_intervals(d, plain, 8.5), MeshOptions{});
+  expect_valid(d, mesh, "thin bands crossed");
+  const double flange = mean_below(mesh, -9.4), leaning_flange = mean_below(leaning, -9.4);
+  std::printf("[ bands    ] lower flange's mean quad %.3f crossed, %.3f not (%d points crossed)\n", flange,
+              leaning_flange, crossed.band_crossings);
+  EXPECT_GT(flange, leaning_flange + 0.05);
+}
+
 TEST(FaceDecomposition, ACuspTrianglesLongSidesAreSplitForTheNeighbourAcrossTheCusp) {
   // A triangle with a 10-degree corner: its three pieces are all neighbours of each
   // other, so only the long sides' points across the cusp can be in front of them.

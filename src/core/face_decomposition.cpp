@@ -219,6 +219,7 @@ class Decomposer {
     for (const DomainLoop& loop : d_.loops) coarsening_.emplace_back(loop, options.reflex_point_turn * kDegree);
     join_thin_junctions();
     split_by_feature_size();
+    if (options.cross_thin_bands) band_crossings_ = cross_thin_bands();
     if (options.clear_corner_ears) corner_splits_ = clear_corner_ears();
   }
 
@@ -231,6 +232,7 @@ class Decomposer {
     FaceDecomposition out;
     out.corner_splits = corner_splits_;
     out.neighbour_splits = neighbour_splits_;
+    out.band_crossings = band_crossings_;
     std::vector<std::set<int>> coarse;
     for (const LoopCoarsening& c : coarsening_) coarse.push_back(c.coarse());
     for (int round = 0;; ++round) {
@@ -362,6 +364,56 @@ class Decomposer {
         coarsening_[best_loop].add(best_point);
       }
     }
+  }
+
+  // DecompositionOptions::cross_thin_bands; returns the points made coarse. Passes
+  // until none is added: a point made coarse is crossed from in turn.
+  int cross_thin_bands() {
+    constexpr double kThinBand = 1.0;           // gap / shortest boundary segment at both ends
+    constexpr double kAcross = 30.0 * kDegree;  // off each side's inward normal, at most
+    constexpr int kPasses = 4;
+    int added = 0;
+    for (int pass = 0; pass < kPasses; ++pass) {
+      bool changed = false;
+      for (int l = 0; l < d_.loop_count(); ++l) {
+        for (const int c : std::vector<int>(coarsening_[l].coarse().begin(), coarsening_[l].coarse().end())) {
+          int best_loop = -1, best_point = -1;
+          double best = INFINITY;
+          for (int m = 0; m < d_.loop_count(); ++m) {
+            for (int i = 0; i < loop_size(m); ++i) {
+              const Vec3 across = point(m, i) - point(l, c);
+              const double gap = norm(across);
+              if (gap >= best || (m == l && i == c) || !faces(l, c, across, kAcross)) continue;
+              best = gap;
+              best_loop = m;
+              best_point = i;
+            }
+          }
+          if (best_loop < 0 || coarsening_[best_loop].is_coarse(best_point)) continue;
+          if (best >= kThinBand * std::min(shortest_segment_at(l, c), shortest_segment_at(best_loop, best_point))) continue;
+          if (!faces(best_loop, best_point, point(l, c) - point(best_loop, best_point), kAcross)) {
+            continue;  // not a band: the other side does not face back
+          }
+          if (!cut_obstacles(d_, l, c, best_loop, best_point).empty()) continue;
+          coarsening_[best_loop].add(best_point);
+          ++added;
+          changed = true;
+        }
+      }
+      if (!changed) break;
+    }
+    return added;
+  }
+
+  // Whether `direction` from point i of loop l is within `angle` of the inward normal
+  // of one of the two boundary segments there (the domain lies to the left of its
+  // loops): at a corner, straight in front of either side.
+  bool faces(int l, int i, const Vec3& direction, double angle) const {
+    const int n = loop_size(l);
+    for (const Vec3& along : {point(l, i) - point(l, wrap(i - 1, n)), point(l, (i + 1) % n) - point(l, i)}) {
+      if (angle_between(Vec3{-along.y, along.x, 0}, direction) <= angle) return true;
+    }
+    return false;
   }
 
   // The coarse vertices before and after point c of loop l.
@@ -634,6 +686,7 @@ class Decomposer {
   const PlanarDomain& d_;
   const DecompositionOptions options_;
   int neighbour_splits_ = 0;
+  int band_crossings_ = 0;
   std::vector<LoopCoarsening> coarsening_;
 };
 
@@ -733,6 +786,9 @@ std::vector<DecompositionOptions> decomposition_variants(const DecompositionOpti
   }
   if (used.neighbours_across_corners && (!made || made->neighbour_splits > 0)) {
     variants.emplace_back(used).neighbours_across_corners = false;
+  }
+  if (used.cross_thin_bands && (!made || made->band_crossings > 0)) {
+    variants.emplace_back(used).cross_thin_bands = false;
   }
   return variants;
 }

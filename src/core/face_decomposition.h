@@ -68,6 +68,7 @@ struct FaceDecomposition {
   int corner_splits = 0;  // pieces split by DecompositionOptions::clear_corner_ears
   int sliver_pairs = 0;   // patches merged by DecompositionOptions::merge_sliver_pairs
   int neighbour_splits = 0;  // pieces split by DecompositionOptions::neighbours_across_corners
+  int band_crossings = 0;    // points made coarse by DecompositionOptions::cross_thin_bands
 };
 
 struct DecompositionOptions {
@@ -96,6 +97,14 @@ struct DecompositionOptions {
   // with it). It also moves cuts elsewhere (part.step face 19 at D/100: 0.020 to
   // 0.012), so callers mesh both and keep the better.
   bool neighbours_across_corners = true;
+  // Where a coarse vertex faces a point of the boundary across a band narrower than
+  // the segments at both (each side within 30 degrees of the other's normal), that
+  // point is a coarse vertex too, so that cuts go straight across the band and its
+  // quads stand upright: the flanges of part.step's face 17, 4.8 wide with segments
+  // of 8.5, were cut at coarse vertices of each side placed apart, into T2s whose
+  // quads leaned by half a segment or more (0.3 to 0.6). Callers mesh without it too
+  // where it added a point, and keep the better.
+  bool cross_thin_bands = true;
   // A boundary point turning inwards (a reflex point) by at least this many degrees
   // is a coarse vertex, CAD vertex or not. 60, as for any point, on faces: 20 there
   // moved as1-tu-203.stp's worst quad at D/50 from 0.39 to 0.30. The boundary
@@ -112,7 +121,8 @@ struct DecompositionOptions {
 void check_planar_domain(const PlanarDomain& domain);
 
 // The options worth a second mesh beside a decomposition `made` with `used`: `used`
-// without each of merge_sliver_pairs and neighbours_across_corners that changed it
+// without each of merge_sliver_pairs, neighbours_across_corners and cross_thin_bands
+// that changed it
 // (each can make a face better or worse; callers keep the better mesh). `made`
 // null: the decomposition could not be made, so every such variant.
 std::vector<DecompositionOptions> decomposition_variants(const DecompositionOptions& used, const FaceDecomposition* made);

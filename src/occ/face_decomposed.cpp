@@ -184,25 +184,28 @@ std::vector<FaceMeshResult> mesh_variants(const FaceChart& chart, const std::opt
 
 }  // namespace
 
-FaceMeshResult mesh_face_decomposed(const TopoDS_Face& face, int face_index, const FaceBoundary& b,
-                                    const std::vector<Vec3>& nodes, int vertex_nodes, double edge_size,
-                                    const MeshOptions& options) {
+std::vector<FaceMeshResult> mesh_face_decomposed(const TopoDS_Face& face, int face_index, const FaceBoundary& b,
+                                                 const std::vector<Vec3>& nodes, int vertex_nodes, double edge_size,
+                                                 const MeshOptions& options) {
   const FaceChart chart(face, face_index, b, nodes, vertex_nodes);
-  std::optional<FaceMeshResult> best;
+  std::vector<FaceMeshResult> meshes;
   PatchMeshMemo patches;  // the decompositions differ only here and there
   std::string plain_problem;
   std::optional<FaceDecomposition> plain;
   try {
     plain = decompose_domain(chart.domain());
-    best = chart.mesh(*plain, edge_size, options, &patches);
+    meshes.push_back(chart.mesh(*plain, edge_size, options, &patches));
   } catch (const InputError& e) {
     plain_problem = e.what();  // a variant below may still mesh the face
   }
   for (FaceMeshResult& variant : mesh_variants(chart, plain, edge_size, options, patches)) {
-    if (!best || better_face_mesh(variant, *best)) best = std::move(variant);
+    meshes.push_back(std::move(variant));
   }
-  if (!best) throw InputError(chart.name() + " (decomposed into patches): " + plain_problem);
-  return std::move(*best);
+  if (meshes.empty()) throw InputError(chart.name() + " (decomposed into patches): " + plain_problem);
+  // The best first; the others keep their order (the plain decomposition first).
+  std::stable_sort(meshes.begin(), meshes.end(),
+                   [](const FaceMeshResult& x, const FaceMeshResult& y) { return better_face_mesh(x, y); });
+  return meshes;
 }
 
 std::optional<FaceMeshResult> mesh_face_disk(const TopoDS_Face& face, int face_index, const FaceBoundary& b,

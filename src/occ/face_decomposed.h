@@ -20,9 +20,12 @@
 namespace tquad {
 
 // Any outline, any number of holes: the general decomposition. `vertex_nodes`: shared
-// nodes below this id are CAD vertices. Throws InputError (naming the face) for a
-// face with a pole, or when the decomposition fails.
-FaceMeshResult mesh_face_decomposed(const TopoDS_Face& face, int face_index, const FaceBoundary& boundary,
+// nodes below this id are CAD vertices. Returns the meshes of the plain decomposition
+// and of its variants (mesh_variants: DecompositionOptions that may mesh a face
+// better), the best first (better_face_mesh); the caller may smooth them all and
+// choose again. Throws InputError (naming the face) for a face with a pole, or when
+// no decomposition can be made.
+std::vector<FaceMeshResult> mesh_face_decomposed(const TopoDS_Face& face, int face_index, const FaceBoundary& boundary,
                                     const std::vector<Vec3>& nodes, int vertex_nodes, double edge_size,
                                     const MeshOptions& options);
 
