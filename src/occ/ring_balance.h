@@ -7,7 +7,8 @@
 //
 // Totals change by whole units, the chains (which keeps their faces mapped) or free
 // edges: each step takes the unit that closes the gap at the least cost
-// (count_cost), never below an edge's floor.
+// (count_cost; between equal costs, the least square of it, so that the steps spread
+// over the units), never below an edge's floor.
 #pragma once
 
 #include <vector>
