@@ -356,6 +356,33 @@ TEST(ShapeMeshing, BandWithUnequalEndsGetsEqualEndsToo) {
   expect_one_mapped_face(mesh_quarter_ring_band(false), 28);  // two quads per segment of the long sides
 }
 
+TEST(ShapeMeshing, WasherHalvesShareTheRingBalanceEvenly) {
+  // A washer whose outer and inner circles are each two half edges (as1-tu-203.stp's,
+  // radii 7.5 and 5). At size 2.64 the outer halves round to 9 + 9 against 6 + 6
+  // inside; closing the gap of 6, every step costs the same (count_cost is linear
+  // below the goals), and the first half used to take most of them: the mapped
+  // ring's quads leaned by two segments (worst 0.117, as on the part). Spread, the
+  // halves stay equal and the ring is upright (0.966).
+  const gp_Ax2 axis(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1));
+  BRepBuilderAPI_MakeWire outer, inner;
+  outer.Add(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 7.5), 0, M_PI).Edge());
+  outer.Add(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 7.5), M_PI, 2 * M_PI).Edge());
+  inner.Add(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 5.0), 0, M_PI).Edge());
+  inner.Add(BRepBuilderAPI_MakeEdge(gp_Circ(axis, 5.0), M_PI, 2 * M_PI).Edge());
+  BRepBuilderAPI_MakeFace face(outer.Wire());
+  face.Add(TopoDS::Wire(inner.Wire().Reversed()));
+  ShapeMeshOptions options;
+  options.size = 2.64;
+  const ShapeMeshResult result = mesh_shape(face.Face(), options);
+  ASSERT_EQ(result.mesh.faces.size(), 1u);
+  EXPECT_EQ(result.mesh.quads.size(), 12u);  // one ring of 12: both loops 6 + 6
+  EXPECT_EQ(result.inverted, 0);
+  const double worst = *std::min_element(result.mesh.scaled_jacobian.begin(), result.mesh.scaled_jacobian.end());
+  std::printf("[ washer   ] %s, %zu quads, worst %.3f\n", result.mesh.faces[0].template_tree.c_str(),
+              result.mesh.quads.size(), worst);
+  EXPECT_GT(worst, 0.8);
+}
+
 TEST(ShapeMeshing, IgesInput) {
   // The bracket written as IGES (BRep mode, which keeps faces and shared edges) reads
   // back and meshes every face.
