@@ -9,7 +9,9 @@
 //     gets 6) or is longer than twice the gap in front of it (the local feature
 //     size), each new piece keeping 2 segments or more, and every loop has at least 3.
 //     A reflex corner much nearer to a point in front of it than to its neighbours (a
-//     thin junction) makes that point a coarse vertex too, so a short cut can join them.
+//     thin junction) makes that point a coarse vertex too, so a short cut can join them;
+//     so does any coarse vertex facing a point across a band thinner than the segments
+//     there (DecompositionOptions::cross_thin_bands), so cuts cross the band.
 //  2. A triangulation of the polygon of coarse vertices (coarse_triangulation.h).
 //     Its diagonals are the cuts, straight in the chart. A cut that meets the real
 //     boundary (a piece bulging across its chord), or leaves it at a sliver angle,
