@@ -180,8 +180,11 @@ TEST(FaceDecomposition, ThinBandsAreCutStraightAcross) {
   d.loops.push_back(segmented_loop({{0, -14.3}, {80, -14.3}, {80, 14.3}, {0, 14.3}, {0, 9.5}, {40, 9.5}, {40, -9.5},
                                     {0, -9.5}},
                                    {9, 4, 9, 1, 5, 2, 5, 1}));
-  const FaceDecomposition crossed = decompose_domain(d);
+  // The reflex corners' extensions (their own test) cut this block elsewhere: left
+  // out here, so that the crossing alone is measured.
   DecompositionOptions options;
+  options.extend_reflex_corners = false;
+  const FaceDecomposition crossed = decompose_domain(d, options);
   options.cross_thin_bands = false;
   const FaceDecomposition plain = decompose_domain(d, options);
   EXPECT_GT(crossed.band_crossings, 0);
@@ -211,6 +214,68 @@ TEST(FaceDecomposition, ThinBandsAreCutStraightAcross) {
   std::printf("[ bands    ] lower flange's mean quad %.3f crossed, %.3f not (%d points crossed)\n", flange,
               leaning_flange, crossed.band_crossings);
   EXPECT_GT(flange, leaning_flange + 0.05);
+}
+
+// Points of the quarter circle from `from` around `centre`, turning left by 90
+// degrees, `segments` of them (the first included, the last not).
+std::vector<Vec3> quarter_arc(const Vec3& centre, const Vec3& from, int segments) {
+  std::vector<Vec3> points;
+  const Vec3 radius = from - centre;
+  for (int k = 0; k < segments; ++k) {
+    const double a = 0.5 * M_PI * k / segments;
+    points.push_back(centre + Vec3{radius.x * std::cos(a) - radius.y * std::sin(a),
+                                   radius.x * std::sin(a) + radius.y * std::cos(a), 0});
+  }
+  return points;
+}
+
+TEST(FaceDecomposition, AReflexCornersSidesAreContinuedAcrossTheFace) {
+  // part.step face 9: an L-shaped plate whose two outer corners away from the notch
+  // are rounded (radius 6.35), segments of about 8.5. Its only sharp coarse
+  // vertices are the four square corners and the reflex one; the feature size adds
+  // none on the long top side. Without the extensions the one cut ran from the
+  // reflex corner to the middle of a rounded corner, two T2 patches with corners of
+  // 120 and 150 degrees. Continued, the notch's two sides split the L into three
+  // mapped rectangles, and the foot's long thin rectangle (its diagonal at 14.5
+  // degrees) stays one patch.
+  PlanarDomain d;
+  DomainLoop loop = segmented_loop({{22.225, 7.9375}, {22.225, 25.4}, {41.275, 25.4}}, {2, 2, 0});
+  const auto append = [&](const std::vector<Vec3>& points, bool vertex_first) {
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      loop.points.push_back(points[k]);
+      loop.vertex.push_back(k == 0 && vertex_first);
+    }
+  };
+  const auto line = [](const Vec3& a, const Vec3& b, int segments) {
+    std::vector<Vec3> points;
+    for (int k = 0; k < segments; ++k) points.push_back(a + (static_cast<double>(k) / segments) * (b - a));
+    return points;
+  };
+  append(line({41.275, 25.4}, {41.275, 57.15}, 4), true);
+  append(quarter_arc({34.925, 57.15}, {41.275, 57.15}, 2), true);
+  append(line({34.925, 63.5}, {-34.925, 63.5}, 9), true);
+  append(quarter_arc({-34.925, 57.15}, {-34.925, 63.5}, 2), true);
+  append(line({-41.275, 57.15}, {-41.275, 7.9375}, 6), true);
+  append(line({-41.275, 7.9375}, {22.225, 7.9375}, 7), true);
+  d.loops.push_back(loop);
+  DecompositionOptions before;
+  before.extend_reflex_corners = false;
+  before.keep_square_pairs = false;
+  const FaceDecomposition extended = decompose_domain(d), plain = decompose_domain(d, before);
+  EXPECT_EQ(extended.reflex_extensions, 2);
+  EXPECT_EQ(plain.reflex_extensions, 0);
+  EXPECT_EQ(extended.patches.size(), 3u);
+  const QuadMesh mesh = mesh_decomposed_domain(d, extended, assign_cut_intervals(d, extended, 8.5), MeshOptions{});
+  const QuadMesh old = mesh_decomposed_domain(d, plain, assign_cut_intervals(d, plain, 8.5), MeshOptions{});
+  expect_valid(d, mesh, "L continued");
+  const QualitySummary q = summarize_quality(mesh, kUp), q_old = summarize_quality(old, kUp);
+  std::printf("[ reflex   ] L-shaped plate: %zu patches, quads min %.3f mean %.3f; without the extensions %zu "
+              "patches, %.3f / %.3f\n",
+              extended.patches.size(), q.scaled_jacobian.min, q.scaled_jacobian.avg, plain.patches.size(),
+              q_old.scaled_jacobian.min, q_old.scaled_jacobian.avg);
+  EXPECT_GT(q.scaled_jacobian.avg, 0.9);
+  EXPECT_GT(q.scaled_jacobian.min, q_old.scaled_jacobian.min);
+  EXPECT_GT(q.scaled_jacobian.avg, q_old.scaled_jacobian.avg + 0.1);
 }
 
 TEST(FaceDecomposition, ACuspTrianglesLongSidesAreSplitForTheNeighbourAcrossTheCusp) {

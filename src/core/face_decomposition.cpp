@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -34,6 +35,9 @@ constexpr double kUrgentPairAngleMin = 10.0 * kDegree;
 // A cut that leaves the boundary at less than this makes a sliver patch against a
 // curved piece: the piece is split (when it can be) so the cut can start elsewhere.
 constexpr double kMinCutAngle = 15.0 * kDegree;
+// A pair whose corners all lie within 30 degrees of square (sines of 0.866 or more)
+// is a patch worth keeping whole (DecompositionOptions::keep_square_pairs).
+constexpr double kSquarePair = 0.866;
 
 int wrap(int i, int n) { return ((i % n) + n) % n; }
 
@@ -210,6 +214,8 @@ namespace {
 struct Pairing {
   std::vector<std::vector<int>> patches;
   std::set<std::pair<int, int>> rescued_diagonals;
+  // DecompositionOptions::keep_square_pairs: the diagonals of the pairs kept whole.
+  std::set<std::pair<int, int>> square_diagonals;
 };
 
 class Decomposer {
@@ -220,6 +226,7 @@ class Decomposer {
     join_thin_junctions();
     split_by_feature_size();
     if (options.cross_thin_bands) band_crossings_ = cross_thin_bands();
+    if (options.extend_reflex_corners) reflex_extensions_ = extend_reflex_corners();
     if (options.clear_corner_ears) corner_splits_ = clear_corner_ears();
   }
 
@@ -233,6 +240,7 @@ class Decomposer {
     out.corner_splits = corner_splits_;
     out.neighbour_splits = neighbour_splits_;
     out.band_crossings = band_crossings_;
+    out.reflex_extensions = reflex_extensions_;
     std::vector<std::set<int>> coarse;
     for (const LoopCoarsening& c : coarsening_) coarse.push_back(c.coarse());
     for (int round = 0;; ++round) {
@@ -263,6 +271,7 @@ class Decomposer {
       if (last_resort) {
         if (!blocked.empty()) throw InputError("the boundary cannot be cut into patches: a cut leaves the domain");
         const Pairing pairing = pair_triangles(polygon, triangles);
+        out.square_pair_slivers = square_pair_slivers_;
         build(polygon, pairing, out);
         return out;
       }
@@ -273,11 +282,15 @@ class Decomposer {
         // splitting a piece there brings the slivers back.
         const Pairing pairing = pair_triangles(polygon, triangles);
         if (round < kRounds) {
-          for (const auto& [loop, segment] : sliver_segments(polygon, triangles, pairing.rescued_diagonals)) {
-            added = coarsening_[loop].split_piece_at(segment) || added;
+          const std::vector<std::pair<int, int>> slivers = sliver_segments(polygon, triangles, skipped_diagonals(pairing));
+          if (options_.keep_square_pairs) {
+            square_pair_slivers_ +=
+                static_cast<int>(sliver_segments(polygon, triangles, pairing.rescued_diagonals).size() - slivers.size());
           }
+          for (const auto& [loop, segment] : slivers) added = coarsening_[loop].split_piece_at(segment) || added;
         }
         if (!added) {
+          out.square_pair_slivers = square_pair_slivers_;
           build(polygon, pairing, out);
           return out;
         }
@@ -403,6 +416,63 @@ class Decomposer {
       if (!changed) break;
     }
     return added;
+  }
+
+  // DecompositionOptions::extend_reflex_corners; returns the points made coarse.
+  int extend_reflex_corners() {
+    constexpr double kMostLean = 20.0 * kDegree;  // between the continued side and the cut
+    int added = 0;
+    for (int l = 0; l < d_.loop_count(); ++l) {
+      const int n = loop_size(l);
+      for (const int c : std::vector<int>(coarsening_[l].coarse().begin(), coarsening_[l].coarse().end())) {
+        if (coarsening_[l].turn(c) > -kSharpVertexTurn) continue;
+        const Vec3& corner = point(l, c);
+        for (const Vec3& side : {corner - point(l, wrap(c - 1, n)), corner - point(l, (c + 1) % n)}) {
+          const std::optional<std::pair<int, int>> end = side_continued(l, c, side, kMostLean);
+          if (!end || !cut_obstacles(d_, l, c, end->first, end->second).empty()) continue;
+          if (coarsening_[end->first].is_coarse(end->second)) continue;
+          coarsening_[end->first].add(end->second);
+          ++added;
+        }
+      }
+    }
+    return added;
+  }
+
+  // The boundary point (loop, point) nearest to where the ray from point c of loop l
+  // along `direction` first meets the boundary, when the way to it leans by at most
+  // `most_lean` from the ray and it is not one of c's neighbours.
+  std::optional<std::pair<int, int>> side_continued(int l, int c, const Vec3& direction, double most_lean) const {
+    const Vec3& from = point(l, c);
+    const double length = norm(direction);
+    if (!(length > 0)) return std::nullopt;
+    const Vec3 ray = (1.0 / length) * direction;
+    double nearest = INFINITY;
+    std::pair<int, int> hit{-1, -1};
+    Vec3 at;
+    for (int m = 0; m < d_.loop_count(); ++m) {
+      const int size = loop_size(m);
+      for (int s = 0; s < size; ++s) {
+        const int s1 = (s + 1) % size;
+        if (m == l && (s == c || s1 == c)) continue;
+        const Vec3 &a = point(m, s), &b = point(m, s1);
+        const Vec3 ab = b - a, ao = a - from;
+        const double denominator = ray.x * ab.y - ray.y * ab.x;
+        if (denominator == 0) continue;  // parallel
+        const double t = (ao.x * ab.y - ao.y * ab.x) / denominator;   // along the ray
+        const double u = (ao.x * ray.y - ao.y * ray.x) / denominator;  // along the segment
+        if (!(t > 0) || u < 0 || u > 1 || t >= nearest) continue;
+        nearest = t;
+        hit = {m, u < 0.5 ? s : s1};
+        at = a + u * ab;
+      }
+    }
+    if (hit.first < 0) return std::nullopt;
+    const int n = loop_size(l);
+    if (hit.first == l && (hit.second == wrap(c - 1, n) || hit.second == (c + 1) % n)) return std::nullopt;
+    const Vec3 cut = point(hit.first, hit.second) - from;
+    if (angle_between(cut, at - from) > most_lean) return std::nullopt;
+    return hit;
   }
 
   // Whether `direction` from point i of loop l is within `angle` of the inward normal
@@ -534,6 +604,15 @@ class Decomposer {
     return sliver;
   }
 
+  // The diagonals whose slivers are left as they are: those of the pairs merged only
+  // for their slivers (splitting a piece there brings the slivers back) and of the
+  // square pairs (no cut lies there).
+  static std::set<std::pair<int, int>> skipped_diagonals(const Pairing& pairing) {
+    std::set<std::pair<int, int>> skipped = pairing.rescued_diagonals;
+    skipped.insert(pairing.square_diagonals.begin(), pairing.square_diagonals.end());
+    return skipped;
+  }
+
   // Segments of the boundary piece that starts at coarse vertex x.
   int piece_segments(const CoarsePolygon& polygon, int x) const {
     const int l = polygon.loop(x), n = loop_size(l);
@@ -632,6 +711,7 @@ class Decomposer {
       used[p.t1] = used[p.t2] = 1;
       out.patches.push_back(p.corners);
       if (p.rescued) out.rescued_diagonals.insert(p.diagonal);
+      if (options_.keep_square_pairs && p.quality >= kSquarePair) out.square_diagonals.insert(p.diagonal);
     }
     for (std::size_t t = 0; t < triangles.size(); ++t) {
       if (!used[t]) out.patches.push_back({triangles[t][0], triangles[t][1], triangles[t][2]});
@@ -687,6 +767,8 @@ class Decomposer {
   const DecompositionOptions options_;
   int neighbour_splits_ = 0;
   int band_crossings_ = 0;
+  int reflex_extensions_ = 0;
+  int square_pair_slivers_ = 0;
   std::vector<LoopCoarsening> coarsening_;
 };
 
@@ -789,6 +871,26 @@ std::vector<DecompositionOptions> decomposition_variants(const DecompositionOpti
   }
   if (used.cross_thin_bands && (!made || made->band_crossings > 0)) {
     variants.emplace_back(used).cross_thin_bands = false;
+  }
+  if (used.extend_reflex_corners && (!made || made->reflex_extensions > 0)) {
+    variants.emplace_back(used).extend_reflex_corners = false;
+  }
+  if (used.keep_square_pairs && (!made || made->square_pair_slivers > 0)) {
+    variants.emplace_back(used).keep_square_pairs = false;
+  }
+  // Options can act together (a square pair along a reflex corner's extension): with
+  // two or more of them, also the decomposition with none, so that the one before any
+  // of them stays a candidate.
+  if (variants.size() >= 2) {
+    DecompositionOptions none = used;
+    for (const DecompositionOptions& v : variants) {
+      none.merge_sliver_pairs = none.merge_sliver_pairs && v.merge_sliver_pairs;
+      none.neighbours_across_corners = none.neighbours_across_corners && v.neighbours_across_corners;
+      none.cross_thin_bands = none.cross_thin_bands && v.cross_thin_bands;
+      none.extend_reflex_corners = none.extend_reflex_corners && v.extend_reflex_corners;
+      none.keep_square_pairs = none.keep_square_pairs && v.keep_square_pairs;
+    }
+    variants.push_back(none);
   }
   return variants;
 }

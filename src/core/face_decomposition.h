@@ -71,6 +71,9 @@ struct FaceDecomposition {
   int sliver_pairs = 0;   // patches merged by DecompositionOptions::merge_sliver_pairs
   int neighbour_splits = 0;  // pieces split by DecompositionOptions::neighbours_across_corners
   int band_crossings = 0;    // points made coarse by DecompositionOptions::cross_thin_bands
+  int reflex_extensions = 0;  // points made coarse by DecompositionOptions::extend_reflex_corners
+  // Sliver ends left as they are by DecompositionOptions::keep_square_pairs.
+  int square_pair_slivers = 0;
 };
 
 struct DecompositionOptions {
@@ -107,6 +110,24 @@ struct DecompositionOptions {
   // quads leaned by half a segment or more (0.3 to 0.6). Callers mesh without it too
   // where it added a point, and keep the better.
   bool cross_thin_bands = true;
+  // A reflex corner's two sides, continued straight into the domain, end at the
+  // boundary point nearest to where they first meet it (within 20 degrees of the
+  // continued side): that point is a coarse vertex, so that a cut can continue the
+  // side and both patches at the corner get a corner near 90 degrees there. Without
+  // it an L-shaped plate with rounded outer corners (part.step face 9) was cut from
+  // its reflex corner to a rounded corner into two T2 patches with corners of 120
+  // and 150 degrees (mean quad 0.72 before smoothing). Callers mesh without it too
+  // where it added a point, and keep the better.
+  bool extend_reflex_corners = true;
+  // A cut leaving the boundary at a sliver angle splits the piece there (so the cut
+  // can start elsewhere), but the diagonal of a pair merged into a patch whose
+  // corners all lie within 30 degrees of square is no cut: its slivers are left as
+  // they are. Without it the thin rectangle at the foot of an L (63.5 by 16.5, a
+  // diagonal at 14.5 degrees) was split in two and its neighbours made triangles
+  // (part.step face 9: mean quad 0.81 before smoothing, 0.95 with it). It also moves
+  // cuts elsewhere (part.step face 22: worst quad 0.39 to 0.02), so callers mesh
+  // without it too and keep the better.
+  bool keep_square_pairs = true;
   // A boundary point turning inwards (a reflex point) by at least this many degrees
   // is a coarse vertex, CAD vertex or not. 60, as for any point, on faces: 20 there
   // moved as1-tu-203.stp's worst quad at D/50 from 0.39 to 0.30. The boundary
@@ -123,8 +144,8 @@ struct DecompositionOptions {
 void check_planar_domain(const PlanarDomain& domain);
 
 // The options worth a second mesh beside a decomposition `made` with `used`: `used`
-// without each of merge_sliver_pairs, neighbours_across_corners and cross_thin_bands
-// that changed it
+// without each of merge_sliver_pairs, neighbours_across_corners, cross_thin_bands,
+// extend_reflex_corners and keep_square_pairs that changed it
 // (each can make a face better or worse; callers keep the better mesh). `made`
 // null: the decomposition could not be made, so every such variant.
 std::vector<DecompositionOptions> decomposition_variants(const DecompositionOptions& used, const FaceDecomposition* made);

@@ -168,6 +168,13 @@ std::vector<FaceMeshResult> mesh_variants(const FaceChart& chart, const std::opt
                                           double edge_size, const MeshOptions& options, PatchMeshMemo& memo) {
   std::vector<DecompositionOptions> variants(1);
   variants[0].clear_corner_ears = true;
+  // Corner ears cleared also as before reflex extensions and square pairs, which move
+  // cuts there too (as1-tu-203.stp face 81 at D/25: 0.44 that way, 0.28 with them).
+  if (!plain || plain->reflex_extensions > 0 || plain->square_pair_slivers > 0) {
+    DecompositionOptions& before = variants.emplace_back(variants[0]);
+    before.extend_reflex_corners = false;
+    before.keep_square_pairs = false;
+  }
   for (const DecompositionOptions& v : decomposition_variants({}, plain ? &*plain : nullptr)) variants.push_back(v);
   std::vector<FaceMeshResult> out;
   for (const DecompositionOptions& variant : variants) {
