@@ -68,7 +68,14 @@ class EarCutter {
       alive_[best] = 0;
       --remaining_;
       if (full_rescan) {
-        for (std::size_t i = 0; i < ring_.size(); ++i) if (alive_[i]) quality[i] = ear_quality(static_cast<int>(i));
+        // Only the ears at p and q change shape; an ear elsewhere that was valid stays
+        // valid with the same triangle (cutting an ear removes a vertex and adds a side
+        // inside the cut ear, which another empty ear triangle cannot cross), so only
+        // the invalid ones are looked at again.
+        for (std::size_t i = 0; i < ring_.size(); ++i) {
+          const int k = static_cast<int>(i);
+          if (alive_[i] && (quality[i] < 0 || k == p || k == q)) quality[i] = ear_quality(k);
+        }
       } else {
         quality[p] = ear_quality(p);
         quality[q] = ear_quality(q);
