@@ -168,20 +168,22 @@ std::vector<FaceMeshResult> mesh_variants(const FaceChart& chart, const std::opt
                                           double edge_size, const MeshOptions& options, PatchMeshMemo& memo) {
   std::vector<DecompositionOptions> variants(1);
   variants[0].clear_corner_ears = true;
-  // Corner ears cleared also as before reflex extensions and square pairs, which move
-  // cuts there too (as1-tu-203.stp face 81 at D/25: 0.44 that way, 0.28 with them).
-  if (!plain || plain->reflex_extensions > 0 || plain->square_pair_slivers > 0) {
-    DecompositionOptions& before = variants.emplace_back(variants[0]);
-    before.extend_reflex_corners = false;
-    before.keep_square_pairs = false;
-  }
   for (const DecompositionOptions& v : decomposition_variants({}, plain ? &*plain : nullptr)) variants.push_back(v);
   std::vector<FaceMeshResult> out;
-  for (const DecompositionOptions& variant : variants) {
+  for (std::size_t k = 0; k < variants.size(); ++k) {
+    const DecompositionOptions variant = variants[k];  // (variants may grow below)
     try {
       const FaceDecomposition decomposition = decompose_domain(chart.domain(), variant);
       // Cleared corner ears that split no piece give the plain decomposition again.
       if (variant.clear_corner_ears && decomposition.corner_splits == 0) continue;
+      // Corner ears cleared also as before reflex extensions and square pairs where
+      // those acted, as they move cuts there too (as1-tu-203.stp face 81 at D/25:
+      // 0.44 that way, 0.28 with them).
+      if (k == 0 && (decomposition.reflex_extensions > 0 || decomposition.square_pair_slivers > 0)) {
+        DecompositionOptions& before = variants.emplace_back(variant);
+        before.extend_reflex_corners = false;
+        before.keep_square_pairs = false;
+      }
       out.push_back(chart.mesh(decomposition, edge_size, options, &memo));
     } catch (const std::exception&) {  // the plain decomposition's mesh stays, as in face_route
     }
