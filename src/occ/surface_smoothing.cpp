@@ -50,13 +50,14 @@ bool turned_is_better(const FaceMeshResult& turned, const FaceMeshResult& incumb
 
 }  // namespace
 
-void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<Vec3>& nodes, FaceMeshResult& mesh) {
+void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<Vec3>& nodes, FaceMeshResult& mesh,
+                      const SmoothingOptions& options) {
   if ((mesh.used_projection && has_seam) || mesh.interior.empty()) return;
   // Every corner already at good_enough: smooth_mesh would move no node (it starts
   // from the nodes with a corner under it), and there is no doublet (a doublet's
   // node has a corner of 180 degrees or more). Measured: each mapped face of 3,364
   // quads of box.brep at D/100 spent about 12 ms here for nothing.
-  if (mesh.worst_corner >= SmoothingOptions{}.good_enough) return;
+  if (mesh.worst_corner >= options.good_enough) return;
   const std::size_t fixed = mesh.boundary_nodes.size();
   if (mesh.param.size() != fixed + mesh.interior.size()) return;  // not measured on the surface
   const BRepAdaptor_Surface surface(face);
@@ -98,7 +99,7 @@ void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<
       const int merged =
           remove_doublets(quads, static_cast<int>(fixed), param, moved, normals, even_if_worse, &refused);
       refused_any = std::max(refused_any, refused);
-      const long long moves = smooth_mesh(quads, static_cast<int>(fixed), param, moved, normals, place).moves;
+      const long long moves = smooth_mesh(quads, static_cast<int>(fixed), param, moved, normals, place, options).moves;
       if (turn || merged > 0 || moves > 0) {
         FaceMeshResult smoothed = without_nodes_and_quads(mesh);
         smoothed.quads = std::move(quads);

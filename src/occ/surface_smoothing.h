@@ -11,6 +11,7 @@
 
 #include <TopoDS_Face.hxx>
 
+#include "core/smoothing.h"
 #include "occ/face_mesher.h"
 
 namespace tquad {
@@ -18,6 +19,8 @@ namespace tquad {
 // `nodes`: the shared nodes (the boundary's positions). A mesh from the 3D route
 // (used_projection) on a face with a seam is left as it is: its (u, v) come from
 // projections and may jump across the seam.
-void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<Vec3>& nodes, FaceMeshResult& mesh);
+// `options`: the smoother's (fewer passes for a quick look at a candidate).
+void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<Vec3>& nodes, FaceMeshResult& mesh,
+                      const SmoothingOptions& options = {});
 
 }  // namespace tquad
