@@ -278,6 +278,28 @@ TEST(FaceDecomposition, AReflexCornersSidesAreContinuedAcrossTheFace) {
   EXPECT_GT(q.scaled_jacobian.avg, q_old.scaled_jacobian.avg + 0.1);
 }
 
+TEST(FaceDecomposition, VariantsLeaveOutEachOptionThatActedAndAllOfThemTogether) {
+  // A decomposition where two options acted: one variant without each, and one
+  // without both, so that the decomposition before either stays a candidate.
+  FaceDecomposition made;
+  made.reflex_extensions = 2;
+  made.square_pair_slivers = 1;
+  const std::vector<DecompositionOptions> variants = decomposition_variants({}, &made);
+  ASSERT_EQ(variants.size(), 3u);
+  EXPECT_FALSE(variants[0].extend_reflex_corners);
+  EXPECT_TRUE(variants[0].keep_square_pairs);
+  EXPECT_TRUE(variants[1].extend_reflex_corners);
+  EXPECT_FALSE(variants[1].keep_square_pairs);
+  EXPECT_FALSE(variants[2].extend_reflex_corners);
+  EXPECT_FALSE(variants[2].keep_square_pairs);
+  EXPECT_TRUE(variants[2].merge_sliver_pairs);  // it did not act: kept
+  // One option alone: no third variant.
+  made.square_pair_slivers = 0;
+  EXPECT_EQ(decomposition_variants({}, &made).size(), 1u);
+  // Nothing made yet: every option left out once, and all together.
+  EXPECT_EQ(decomposition_variants({}, nullptr).size(), 6u);
+}
+
 TEST(FaceDecomposition, ACuspTrianglesLongSidesAreSplitForTheNeighbourAcrossTheCusp) {
   // A triangle with a 10-degree corner: its three pieces are all neighbours of each
   // other, so only the long sides' points across the cusp can be in front of them.
