@@ -383,6 +383,30 @@ TEST(ShapeMeshing, WasherHalvesShareTheRingBalanceEvenly) {
   EXPECT_GT(worst, 0.8);
 }
 
+TEST(ShapeMeshing, AThinRingsFacingArcsKeepEqualCounts) {
+  // SampleCrankshaft4A.stp face 103: a flat ring 3.2 wide between radii 25.4 and
+  // 28.6, each circle two half arcs, the outer ones shared with a cylinder. At the
+  // default size the ring's loop totals were balanced (14 and 14) but its outer arcs
+  // ended at 6 and 8 against 7 and 7 inside, the mapped ring folded and the face was
+  // decomposed into 35 quads of mean 0.47; facing arcs chained, it is one ring.
+  const fs::path part = fs::path(TQUAD_SHARED_CAD_DIR) / "SampleCrankshaft4A.stp";
+  if (!fs::exists(part)) GTEST_SKIP() << "no " << part << " (the CAD parts are not shipped)";
+  ShapeMeshOptions options;
+  options.keep_going = true;
+  const ShapeMeshResult result = mesh_shape(read_shape(part.string()), options);
+  const auto ring = std::find_if(result.mesh.faces.begin(), result.mesh.faces.end(),
+                                 [](const FaceMesh& f) { return f.face == 103; });
+  ASSERT_NE(ring, result.mesh.faces.end());
+  double worst = 1;
+  for (std::int64_t q = ring->first_quad; q < ring->first_quad + ring->quad_count; ++q) {
+    worst = std::min(worst, result.mesh.scaled_jacobian[q]);
+  }
+  std::printf("[ ring     ] face 103: %s, %lld quads, worst %.3f\n", ring->template_tree.c_str(),
+              static_cast<long long>(ring->quad_count), worst);
+  EXPECT_EQ(ring->template_tree.substr(0, 1), "R");
+  EXPECT_GT(worst, 0.9);
+}
+
 TEST(ShapeMeshing, IgesInput) {
   // The bracket written as IGES (BRep mode, which keeps faces and shared edges) reads
   // back and meshes every face.
