@@ -51,7 +51,9 @@ class EarCutter {
 
   std::vector<CoarseTriangle> run() {
     std::vector<CoarseTriangle> triangles;
-    const bool full_rescan = ring_.size() <= 400;  // O(n^3) only for small rings
+    // Small rings keep every ear's value exact after each cut (up to O(n^3)); larger
+    // ones look again only at the cut ear's neighbours, and rescan when none is left.
+    const bool exact = ring_.size() <= 400;
     std::vector<double> quality(ring_.size(), -1);
     for (std::size_t i = 0; i < ring_.size(); ++i) quality[i] = ear_quality(static_cast<int>(i));
     while (remaining_ > 3) {
@@ -67,7 +69,7 @@ class EarCutter {
       prev_[q] = p;
       alive_[best] = 0;
       --remaining_;
-      if (full_rescan) {
+      if (exact) {
         // Only the ears at p and q change shape; an ear elsewhere that was valid stays
         // valid with the same triangle (cutting an ear removes a vertex and adds a side
         // inside the cut ear, which another empty ear triangle cannot cross), so only

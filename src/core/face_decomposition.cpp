@@ -861,37 +861,31 @@ std::vector<int> side_nodes(const PlanarDomain& domain, const FaceDecomposition&
   return nodes;
 }
 
+// Each option worth a second mesh, and what the decomposition counts where it acted.
+struct VariantOption {
+  bool DecompositionOptions::*option;
+  int FaceDecomposition::*acted;
+};
+constexpr VariantOption kVariantOptions[] = {
+    {&DecompositionOptions::merge_sliver_pairs, &FaceDecomposition::sliver_pairs},
+    {&DecompositionOptions::neighbours_across_corners, &FaceDecomposition::neighbour_splits},
+    {&DecompositionOptions::cross_thin_bands, &FaceDecomposition::band_crossings},
+    {&DecompositionOptions::extend_reflex_corners, &FaceDecomposition::reflex_extensions},
+    {&DecompositionOptions::keep_square_pairs, &FaceDecomposition::square_pair_slivers},
+};
+
 std::vector<DecompositionOptions> decomposition_variants(const DecompositionOptions& used, const FaceDecomposition* made) {
   std::vector<DecompositionOptions> variants;
-  if (used.merge_sliver_pairs && (!made || made->sliver_pairs > 0)) {
-    variants.emplace_back(used).merge_sliver_pairs = false;
-  }
-  if (used.neighbours_across_corners && (!made || made->neighbour_splits > 0)) {
-    variants.emplace_back(used).neighbours_across_corners = false;
-  }
-  if (used.cross_thin_bands && (!made || made->band_crossings > 0)) {
-    variants.emplace_back(used).cross_thin_bands = false;
-  }
-  if (used.extend_reflex_corners && (!made || made->reflex_extensions > 0)) {
-    variants.emplace_back(used).extend_reflex_corners = false;
-  }
-  if (used.keep_square_pairs && (!made || made->square_pair_slivers > 0)) {
-    variants.emplace_back(used).keep_square_pairs = false;
-  }
   // Options can act together (a square pair along a reflex corner's extension): with
   // two or more of them, also the decomposition with none, so that the one before any
   // of them stays a candidate.
-  if (variants.size() >= 2) {
-    DecompositionOptions none = used;
-    for (const DecompositionOptions& v : variants) {
-      none.merge_sliver_pairs = none.merge_sliver_pairs && v.merge_sliver_pairs;
-      none.neighbours_across_corners = none.neighbours_across_corners && v.neighbours_across_corners;
-      none.cross_thin_bands = none.cross_thin_bands && v.cross_thin_bands;
-      none.extend_reflex_corners = none.extend_reflex_corners && v.extend_reflex_corners;
-      none.keep_square_pairs = none.keep_square_pairs && v.keep_square_pairs;
-    }
-    variants.push_back(none);
+  DecompositionOptions none = used;
+  for (const auto& [option, acted] : kVariantOptions) {
+    if (!(used.*option) || (made && made->*acted == 0)) continue;
+    variants.emplace_back(used).*option = false;
+    none.*option = false;
   }
+  if (variants.size() >= 2) variants.push_back(none);
   return variants;
 }
 

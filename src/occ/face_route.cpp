@@ -225,7 +225,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
       other_decompositions.clear();
     }
     // Each looked at with a few passes, and the best of them smoothed in full.
-    std::optional<std::size_t> promising;
+    std::size_t promising = 0;
     std::optional<FaceMeshResult> promising_look;
     for (std::size_t k = 0; k < other_decompositions.size(); ++k) {
       FaceMeshResult look = other_decompositions[k];
@@ -235,8 +235,8 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
         promising_look = std::move(look);
       }
     }
-    if (promising) {
-      FaceMeshResult& other = other_decompositions[*promising];
+    if (promising_look) {
+      FaceMeshResult& other = other_decompositions[promising];
       smooth_face_mesh(index.face(f), seam, nodes, other);
       if (better_worst_then_mean(other, *best)) {
         other.meshing_seconds = best->meshing_seconds;

@@ -110,17 +110,23 @@ gp_Pnt edge_middle(const ShapeIndex& index, int e) {
 // middle), when that is one to one both ways; nothing otherwise.
 std::vector<std::pair<int, int>> facing_edges(const ShapeIndex& index, const std::vector<int>& a,
                                               const std::vector<int>& b) {
-  const auto nearest = [&](int e, const std::vector<int>& among) {
-    const gp_Pnt middle = edge_middle(index, e);
-    int best = among[0];
-    for (int o : among) if (middle.Distance(edge_middle(index, o)) < middle.Distance(edge_middle(index, best))) best = o;
+  const auto middles = [&](const std::vector<int>& edges) {
+    std::vector<gp_Pnt> out;
+    for (int e : edges) out.push_back(edge_middle(index, e));
+    return out;
+  };
+  const std::vector<gp_Pnt> at_a = middles(a), at_b = middles(b);
+  // The position in `among` of the middle nearest to `p`.
+  const auto nearest = [](const gp_Pnt& p, const std::vector<gp_Pnt>& among) {
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < among.size(); ++k) if (p.Distance(among[k]) < p.Distance(among[best])) best = k;
     return best;
   };
   std::vector<std::pair<int, int>> pairs;
-  for (int e : a) {
-    const int o = nearest(e, b);
-    if (nearest(o, a) != e) return {};
-    pairs.push_back({e, o});
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const std::size_t j = nearest(at_a[i], at_b);
+    if (nearest(at_b[j], at_a) != i) return {};
+    pairs.push_back({a[i], b[j]});
   }
   return pairs;
 }
