@@ -1,7 +1,9 @@
 #include "occ/interval_assignment.h"
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
+#include <TopoDS.hxx>
 #include <TopExp_Explorer.hxx>
 
 #include <cmath>
@@ -150,12 +152,33 @@ void opposite_edge_pairs(FaceWireEdges& face_wires, int face, std::vector<std::p
 
 }  // namespace
 
-void raise_three_edge_face_floors(FaceWireEdges& face_wires, const std::vector<char>& meshed, std::vector<int>& floor) {
-  for (int f = 0; f < face_wires.index().face_count(); ++f) {
+namespace {
+
+// The three edges of a face bounded by one wire of three edges besides degenerate
+// ones (a pole at a corner: a quarter of a disk made with its centre collapsed, as
+// tank.brep's end caps, is meshed as a triangle); nothing for other faces.
+std::optional<std::vector<int>> three_edges(const ShapeIndex& index, int face) {
+  const TopoDS_Face& f = index.face(face);
+  std::vector<int> edges;
+  int wires = 0;
+  for (TopExp_Explorer w(f, TopAbs_WIRE); w.More(); w.Next()) {
+    if (++wires > 1) return std::nullopt;
+    for (BRepTools_WireExplorer it(TopoDS::Wire(w.Current()), f); it.More(); it.Next()) {
+      if (!BRep_Tool::Degenerated(it.Current())) edges.push_back(index.edge_index(it.Current()));
+    }
+  }
+  if (edges.size() != 3 || edges[0] == edges[1] || edges[1] == edges[2] || edges[0] == edges[2]) return std::nullopt;
+  return edges;
+}
+
+}  // namespace
+
+void raise_three_edge_face_floors(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& floor) {
+  for (int f = 0; f < index.face_count(); ++f) {
     if (!meshed[f]) continue;
-    const auto& wires = face_wires.of(f);
-    if (!wires || wires->size() != 1 || (*wires)[0].size() != 3) continue;
-    for (int e : (*wires)[0]) floor[e] = std::max(floor[e], kThreeCurveSideMinimum);
+    if (const auto edges = three_edges(index, f)) {
+      for (int e : *edges) floor[e] = std::max(floor[e], kThreeCurveSideMinimum);
+    }
   }
 }
 
