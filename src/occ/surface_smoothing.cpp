@@ -6,6 +6,7 @@
 
 #include "core/doublets.h"
 #include "core/flat_corner_turns.h"
+#include "core/sharp_corner_flips.h"
 #include "core/smoothing.h"
 #include "occ/occ_vec.h"
 
@@ -31,7 +32,8 @@ FaceMeshResult without_nodes_and_quads(FaceMeshResult& source) {
   return copy;
 }
 
-// A mesh with flat corners turned replaces the best so far only for a clear gain: a
+// A mesh with its layout changed around boundary corners (flat corners turned, sharp
+// ones flipped) replaces the best so far only for a clear gain: a
 // worst corner better by kTurnGain (or, below that, doubled), or as good and a better
 // mean. A turn changes the layout around the node; on two faces of Zylkopf.stp at
 // D/25 it raised the worst corner by 0.01-0.02 and lowered the mean by 0.02-0.05,
@@ -46,6 +48,19 @@ bool turned_is_better(const FaceMeshResult& turned, const FaceMeshResult& incumb
   if (gain > 0 && gain >= std::min(kTurnGain, incumbent.worst_corner)) return true;
   return turned.worst_corner >= incumbent.worst_corner &&
          mean_scaled_jacobian(turned) > mean_scaled_jacobian(incumbent);
+}
+
+// The surface normals (of any length: a B-spline face's derivatives' cross product,
+// hundreds long on capot.brep) at unit length, zero where singular, as the layout
+// changes' corner measures want them.
+std::vector<Vec3> unit_normals(const std::vector<Vec3>& normal) {
+  std::vector<Vec3> unit;
+  unit.reserve(normal.size());
+  for (const Vec3& n : normal) {
+    const double length = norm(n);
+    unit.push_back(length > 0 ? (1.0 / length) * n : Vec3{});
+  }
+  return unit;
 }
 
 }  // namespace
@@ -79,34 +94,47 @@ void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<
   };
   // Doublets merged where the merged quad is no worse; where some are not, also with
   // every doublet merged and its reflex corner left to the smoothing; and each of
-  // these again with flat boundary corners turned (core/flat_corner_turns.h) where
-  // the mesh has any: the best kept. `mesh` stays as it is until the end: each try
-  // starts from it.
-  std::vector<Quad> turned;
-  bool any_turn = false;
-  if (has_flat_lone_corner(mesh.quads, static_cast<int>(fixed), position, mesh.normal)) {
-    turned = mesh.quads;
-    any_turn = turn_flat_boundary_corners(turned, static_cast<int>(fixed), position, mesh.normal) > 0;
+  // these again with the layout changed around boundary corners where the mesh has
+  // such corners: flat ones turned (core/flat_corner_turns.h), or lopsided sharp ones
+  // flipped (core/sharp_corner_flips.h), each on its own. The best kept. `mesh`
+  // stays as it is until the end: each try starts from it.
+  std::vector<std::vector<Quad>> layouts{mesh.quads};
+  const std::vector<Vec3> unit = unit_normals(mesh.normal);
+  // `quads` with its flat lone corners turned, when it has any.
+  const auto add_turned = [&](const std::vector<Quad>& quads) {
+    if (!has_flat_lone_corner(quads, static_cast<int>(fixed), position, unit)) return;
+    std::vector<Quad> turned = quads;
+    if (turn_flat_boundary_corners(turned, static_cast<int>(fixed), position, unit) > 0) {
+      layouts.push_back(std::move(turned));
+    }
+  };
+  add_turned(mesh.quads);
+  for (FlipDiagonal diagonal : {FlipDiagonal::better_now, FlipDiagonal::other}) {
+    std::vector<Quad> flipped = mesh.quads;
+    if (flip_lopsided_sharp_corners(flipped, static_cast<int>(fixed), position, unit, diagonal) > 0) {
+      layouts.push_back(flipped);
+      add_turned(flipped);  // a flip may leave a neighbour alone on a straight boundary
+    }
   }
   std::optional<FaceMeshResult> best;
   for (bool even_if_worse : {false, true}) {
     int refused_any = 0;
-    for (bool turn : {false, true}) {
-      if (turn && !any_turn) break;
+    for (std::size_t layout = 0; layout < layouts.size(); ++layout) {
+      const bool changed = layout > 0;
       std::vector<Vec3> param = mesh.param, moved = position, normals = mesh.normal;
-      std::vector<Quad> quads = turn ? turned : mesh.quads;
+      std::vector<Quad> quads = layouts[layout];
       int refused = 0;
       const int merged =
           remove_doublets(quads, static_cast<int>(fixed), param, moved, normals, even_if_worse, &refused);
       refused_any = std::max(refused_any, refused);
       const long long moves = smooth_mesh(quads, static_cast<int>(fixed), param, moved, normals, place, options).moves;
-      if (turn || merged > 0 || moves > 0) {
+      if (changed || merged > 0 || moves > 0) {
         FaceMeshResult smoothed = without_nodes_and_quads(mesh);
         smoothed.quads = std::move(quads);
         smoothed.interior.assign(moved.begin() + fixed, moved.end());
         check_on_surface(face, surface, param, mesh.polar, moved, std::move(normals), smoothed);
         const FaceMeshResult& incumbent = best ? *best : mesh;
-        if (turn ? turned_is_better(smoothed, incumbent) : !better_face_mesh(incumbent, smoothed)) {
+        if (changed ? turned_is_better(smoothed, incumbent) : !better_face_mesh(incumbent, smoothed)) {
           best = std::move(smoothed);
         }
       }
