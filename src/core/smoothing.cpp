@@ -251,6 +251,9 @@ class Smoother {
     return run(options, scan_corners(quads_, fixed_, nodes_, options.good_enough).deciding);
   }
 
+  // Only the nodes marked in `movable` move from now on.
+  void restrict_to(std::vector<bool> movable) { movable_ = std::move(movable); }
+
   // `active`: the nodes deciding a corner under good_enough (scan_corners), moved
   // first; then only nodes with a neighbour that moved (or that moved themselves):
   // most of a mesh (its mapped grids) is left as the templates placed it.
@@ -262,6 +265,7 @@ class Smoother {
       long long moves = 0;
       for (int n = fixed_; n < count; ++n) {
         if (!active[n] || nodes_.singular(n)) continue;  // a node on a pole stays there
+        if (!movable_.empty() && !movable_[n]) continue;
         // First the mean of the neighbours; then, where a corner stays poor, the
         // steepest ascent of the worst corner from wherever the Laplacian left the
         // node. With the ascent only where the Laplacian failed, the Laplacian's
@@ -562,6 +566,7 @@ class Smoother {
   int fixed_;
   Nodes& nodes_;
   SlottedLists quads_of_;  // the quads around each node
+  std::vector<bool> movable_;  // empty: every node from fixed_ on
   // The ascents' buffers, kept to spare an allocation per node.
   std::vector<double> values_, gradient_first_, gradient_second_;
   std::vector<Vec3> gradients_;
@@ -641,6 +646,21 @@ SmoothingResult smooth_mesh(const std::vector<Quad>& quads, int fixed, std::vect
   const long long untangling_moves = unfold_inverted_corners(quads, fixed, param, position, normal, place);
   SurfaceNodes nodes(param, position, normal, place);
   SmoothingResult result = Smoother<SurfaceNodes>(quads, fixed, nodes).run(options);
+  result.untangling_moves = untangling_moves;
+  return result;
+}
+
+SmoothingResult smooth_mesh_near(const std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param,
+                                 std::vector<Vec3>& position, std::vector<Vec3>& normal, const PlaceNode& place,
+                                 std::vector<bool> region, const SmoothingOptions& options) {
+  if (fixed >= static_cast<int>(param.size())) return {};
+  const long long untangling_moves = unfold_inverted_corners(quads, fixed, param, position, normal, place);
+  SurfaceNodes nodes(param, position, normal, place);
+  region.resize(param.size(), false);
+  std::fill(region.begin(), region.begin() + fixed, false);
+  Smoother<SurfaceNodes> smoother(quads, fixed, nodes);
+  smoother.restrict_to(region);
+  SmoothingResult result = smoother.run(options, std::move(region));
   result.untangling_moves = untangling_moves;
   return result;
 }

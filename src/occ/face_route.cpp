@@ -229,7 +229,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     std::optional<FaceMeshResult> promising_look;
     for (std::size_t k = 0; k < other_decompositions.size(); ++k) {
       FaceMeshResult look = other_decompositions[k];
-      smooth_face_mesh(index.face(f), seam, nodes, look, kVariantLook);
+      smooth_face_mesh(index.face(f), seam, nodes, look, kVariantLook, LayoutChanges::none);
       if (!promising_look || better_worst_then_mean(look, *promising_look)) {
         promising = k;
         promising_look = std::move(look);

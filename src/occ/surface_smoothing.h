@@ -20,7 +20,10 @@ namespace tquad {
 // (used_projection) on a face with a seam is left as it is: its (u, v) come from
 // projections and may jump across the seam.
 // `options`: the smoother's (fewer passes for a quick look at a candidate).
+// `layouts`: whether layouts changed around boundary corners (flat corners turned,
+// lopsided sharp ones flipped) are tried too; a quick look keeps the mesh's own.
+enum class LayoutChanges { tried, none };
 void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<Vec3>& nodes, FaceMeshResult& mesh,
-                      const SmoothingOptions& options = {});
+                      const SmoothingOptions& options = {}, LayoutChanges layouts = LayoutChanges::tried);
 
 }  // namespace tquad
