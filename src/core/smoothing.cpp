@@ -654,10 +654,18 @@ SmoothingResult smooth_mesh_near(const std::vector<Quad>& quads, int fixed, std:
                                  std::vector<Vec3>& position, std::vector<Vec3>& normal, const PlaceNode& place,
                                  std::vector<bool> region, const SmoothingOptions& options) {
   if (fixed >= static_cast<int>(param.size())) return {};
-  const long long untangling_moves = unfold_inverted_corners(quads, fixed, param, position, normal, place);
-  SurfaceNodes nodes(param, position, normal, place);
   region.resize(param.size(), false);
   std::fill(region.begin(), region.begin() + fixed, false);
+  // Folds unfolded among the quads touching the region alone, by its nodes alone.
+  std::vector<Quad> touching;
+  for (const Quad& q : quads) {
+    if (std::any_of(q.begin(), q.end(), [&](NodeId n) { return region[n]; })) touching.push_back(q);
+  }
+  const PlaceNode in_region = [&](int n, const Vec3& p, Vec3& at, Vec3& out_normal) {
+    return region[n] && place(n, p, at, out_normal);
+  };
+  const long long untangling_moves = unfold_inverted_corners(touching, fixed, param, position, normal, in_region);
+  SurfaceNodes nodes(param, position, normal, place);
   Smoother<SurfaceNodes> smoother(quads, fixed, nodes);
   smoother.restrict_to(region);
   SmoothingResult result = smoother.run(options, std::move(region));
