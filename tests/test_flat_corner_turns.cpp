@@ -3,16 +3,16 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
-#include <map>
-#include <set>
-#include <utility>
 
 #include "core/flat_corner_turns.h"
 #include "core/quality.h"
+#include "quad_layouts.h"
 
 namespace tquad {
 namespace {
+
+using testing::canonical;
+using testing::quads_per_node;
 
 // A 3 x 2 rectangle: boundary nodes 0-9 counter-clockwise from (0, 0), inner nodes 10
 // (1, 1) and 11 (2, 1).
@@ -30,17 +30,6 @@ std::vector<Quad> grid_quads() {
 // in the quad (0, 1, 2, 11) alone, a corner of 180 degrees there.
 std::vector<Quad> quads_with_a_flat_corner() {
   return {{0, 1, 2, 11}, {0, 11, 10, 9}, {2, 3, 4, 11}, {9, 10, 7, 8}, {10, 11, 6, 7}, {11, 4, 5, 6}};
-}
-
-// A quad as the set of its node cycle's rotations' first form, to compare meshes
-// whatever quad each one starts at.
-std::set<Quad> canonical(const std::vector<Quad>& quads) {
-  std::set<Quad> out;
-  for (Quad q : quads) {
-    std::rotate(q.begin(), std::min_element(q.begin(), q.end()), q.end());
-    out.insert(q);
-  }
-  return out;
 }
 
 std::vector<Vec3> up(std::size_t n) { return std::vector<Vec3>(n, Vec3{0, 0, 1}); }
@@ -69,13 +58,6 @@ TEST(FlatCornerTurns, AGoodMeshIsLeftAsItIs) {
   EXPECT_EQ(quads, grid_quads());
 }
 
-// Quads per node.
-std::vector<int> quads_per_node(const std::vector<Quad>& quads, std::size_t nodes) {
-  std::vector<int> count(nodes, 0);
-  for (const Quad& q : quads) for (NodeId n : q) ++count[n];
-  return count;
-}
-
 TEST(FlatCornerTurns, ATurnLeavingANeighbourAloneAtAStraightBoundaryGoesOnToACorner) {
   // Node 9 moved to (-1, 0): the boundary runs straight through node 0 too. Turning
   // node 1's quad toward node 0 leaves node 0 alone at 180 degrees, so node 0's quad is
@@ -93,15 +75,7 @@ TEST(FlatCornerTurns, ATurnLeavingANeighbourAloneAtAStraightBoundaryGoesOnToACor
   for (std::size_t n = kBoundaryNodes; n < nodes.size(); ++n) EXPECT_GE(count[n], 3) << "inner node " << n;
   // Still one closed, conforming mesh of the same six quads' area: every inner edge in
   // two quads (once each way), every boundary edge in one.
-  std::map<std::pair<NodeId, NodeId>, int> directed;
-  for (const Quad& q : quads) for (int i = 0; i < 4; ++i) ++directed[{q[i], q[(i + 1) % 4]}];
-  for (const auto& [edge, times] : directed) {
-    EXPECT_EQ(times, 1);
-    const bool on_boundary = edge.first < kBoundaryNodes && edge.second < kBoundaryNodes &&
-                             (edge.second == (edge.first + 1) % kBoundaryNodes);
-    EXPECT_EQ(directed.count({edge.second, edge.first}), on_boundary ? 0u : 1u)
-        << edge.first << " -> " << edge.second;
-  }
+  testing::expect_conforming(quads, kBoundaryNodes);
 }
 
 }  // namespace

@@ -2,16 +2,15 @@
 // corner in two quads, one of them poor there, ends in one quad; nothing else changes.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <map>
-#include <set>
-#include <utility>
-
 #include "core/quality.h"
 #include "core/sharp_corner_flips.h"
+#include "quad_layouts.h"
 
 namespace tquad {
 namespace {
+
+using testing::canonical;
+using testing::quads_per_node;
 
 // A 3 x 3 square: boundary nodes 0-11 counter-clockwise from (0, 0), inner nodes 12
 // (1, 1), 13 (2, 1), 14 (1, 2), 15 (2, 2).
@@ -36,22 +35,7 @@ std::vector<Quad> quads_with_a_lopsided_corner() {
   return quads;
 }
 
-std::set<Quad> canonical(const std::vector<Quad>& quads) {
-  std::set<Quad> out;
-  for (Quad q : quads) {
-    std::rotate(q.begin(), std::min_element(q.begin(), q.end()), q.end());
-    out.insert(q);
-  }
-  return out;
-}
-
 std::vector<Vec3> up(std::size_t n) { return std::vector<Vec3>(n, Vec3{0, 0, 1}); }
-
-std::vector<int> quads_per_node(const std::vector<Quad>& quads, std::size_t nodes) {
-  std::vector<int> count(nodes, 0);
-  for (const Quad& q : quads) for (NodeId n : q) ++count[n];
-  return count;
-}
 
 TEST(SharpCornerFlips, ALopsidedCornerEndsInOneQuad) {
   const std::vector<Vec3> nodes = square_nodes();
@@ -68,14 +52,7 @@ TEST(SharpCornerFlips, TheOtherDiagonalKeepsTheMeshConforming) {
   const std::vector<int> count = quads_per_node(quads, nodes.size());
   EXPECT_EQ(count[0], 1);
   for (std::size_t n = kBoundaryNodes; n < nodes.size(); ++n) EXPECT_GE(count[n], 3) << "inner node " << n;
-  std::map<std::pair<NodeId, NodeId>, int> directed;
-  for (const Quad& q : quads) for (int i = 0; i < 4; ++i) ++directed[{q[i], q[(i + 1) % 4]}];
-  for (const auto& [edge, times] : directed) {
-    EXPECT_EQ(times, 1);
-    const bool on_boundary = edge.first < kBoundaryNodes && edge.second < kBoundaryNodes &&
-                             edge.second == (edge.first + 1) % kBoundaryNodes;
-    EXPECT_EQ(directed.count({edge.second, edge.first}), on_boundary ? 0u : 1u) << edge.first << " -> " << edge.second;
-  }
+  testing::expect_conforming(quads, kBoundaryNodes);
 }
 
 TEST(SharpCornerFlips, EvenSplitsAndFlatCornersAreLeftAsTheyAre) {
