@@ -1,9 +1,9 @@
 #include "core/flat_corner_turns.h"
 
 #include <algorithm>
-#include <array>
 #include <utility>
 
+#include "core/quads_around_nodes.h"
 #include "core/quality.h"
 
 namespace tquad {
@@ -12,13 +12,8 @@ namespace {
 
 // The scaled Jacobian of `quad` at its node n, each corner signed by its node's normal.
 double corner_at(const Quad& quad, NodeId n, const std::vector<Vec3>& position, const std::vector<Vec3>& normal) {
-  std::array<Vec3, 4> p, nn;
-  for (int i = 0; i < 4; ++i) {
-    p[i] = position[quad[i]];
-    nn[i] = normal[quad[i]];
-  }
   const int k = static_cast<int>(std::find(quad.begin(), quad.end(), n) - quad.begin());
-  return quad_corners(p, nn).jacobian[k];
+  return quad_corners(quad, position, normal).jacobian[k];
 }
 
 // Which way a chain runs from the lone node a of its quad (a, b, c, d): toward d
@@ -29,11 +24,7 @@ class FlatCornerTurner {
  public:
   FlatCornerTurner(std::vector<Quad>& quads, int fixed, const std::vector<Vec3>& position,
                    const std::vector<Vec3>& normal)
-      : quads_(quads), fixed_(fixed), position_(position), normal_(normal), around_(position.size()) {
-    for (std::size_t q = 0; q < quads_.size(); ++q) {
-      for (NodeId n : quads_[q]) around_[n].push_back(static_cast<int>(q));
-    }
-  }
+      : quads_(quads), fixed_(fixed), position_(position), normal_(normal), around_(quads, position.size()) {}
 
   // The shorter of the chains from a flat lone node a in either direction; 0 turns
   // where neither ends well.
@@ -58,12 +49,12 @@ class FlatCornerTurner {
 
  private:
   bool flat_and_alone(NodeId a) const {
-    return around_[a].size() == 1 && corner_at(quads_[around_[a][0]], a, position_, normal_) < kFlatCornerBelow;
+    return around_.of(a).size() == 1 && corner_at(quads_[around_.of(a)[0]], a, position_, normal_) < kFlatCornerBelow;
   }
 
   // The quad other than q with the directed edge from -> to, and where `from` is in it.
   std::pair<int, int> across(int q, NodeId from, NodeId to) const {
-    for (int r : around_[from]) {
+    for (int r : around_.of(from)) {
       if (r == q) continue;
       for (int i = 0; i < 4; ++i) {
         if (quads_[r][i] == from && quads_[r][(i + 1) % 4] == to) return {r, i};
@@ -76,11 +67,7 @@ class FlatCornerTurner {
     log_.emplace_back(q, quads_[q]);
     set(q, quad);
   }
-  void set(int q, const Quad& quad) {
-    for (NodeId n : quads_[q]) around_[n].erase(std::find(around_[n].begin(), around_[n].end(), q));
-    quads_[q] = quad;
-    for (NodeId n : quads_[q]) around_[n].push_back(q);
-  }
+  void set(int q, const Quad& quad) { around_.set(q, quad); }
   // Undoes the last `turns` turns (two replaced quads each).
   void undo(int turns) {
     for (int i = 0; i < 2 * turns; ++i) {
@@ -94,7 +81,7 @@ class FlatCornerTurner {
   int chain(NodeId a, Toward way) {
     int turns = 0;
     for (NodeId lone = a; turns < kMaxChain;) {
-      const int q = around_[lone][0];
+      const int q = around_.of(lone)[0];
       const Quad quad = quads_[q];
       const int k = static_cast<int>(std::find(quad.begin(), quad.end(), lone) - quad.begin());
       const NodeId b = quad[(k + 1) % 4], c = quad[(k + 2) % 4], d = quad[(k + 3) % 4];
@@ -102,7 +89,7 @@ class FlatCornerTurner {
       // (c), and the two new quads.
       const NodeId giver = way == Toward::d ? d : b;
       const auto [r, at] = way == Toward::d ? across(q, d, c) : across(q, c, b);
-      if (r < 0 || c < fixed_ || around_[c].size() < 4) break;
+      if (r < 0 || c < fixed_ || around_.of(c).size() < 4) break;
       const NodeId far1 = quads_[r][(at + 2) % 4], far2 = quads_[r][(at + 3) % 4];
       const Quad first = way == Toward::d ? Quad{lone, b, c, far1} : Quad{lone, b, far1, far2};
       const Quad second = way == Toward::d ? Quad{lone, far1, far2, d} : Quad{lone, far2, c, d};
@@ -111,7 +98,7 @@ class FlatCornerTurner {
       replace(r, second);
       ++turns;
       if (giver >= fixed_) {  // an inner node (a hole's edge is boundary too): keep three
-        if (around_[giver].size() >= 3) return turns;
+        if (around_.of(giver).size() >= 3) return turns;
         break;
       }
       if (!flat_and_alone(giver)) return turns;  // it kept two quads, or a real corner
@@ -132,7 +119,7 @@ class FlatCornerTurner {
   const int fixed_;
   const std::vector<Vec3>& position_;
   const std::vector<Vec3>& normal_;
-  std::vector<std::vector<int>> around_;            // each node's quads, kept up to date
+  QuadsAroundNodes around_;                         // each node's quads, kept up to date
   std::vector<std::pair<int, Quad>> log_;           // replaced quads, for undo
 };
 

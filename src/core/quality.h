@@ -39,6 +39,17 @@ struct QuadCorners {
 };
 QuadCorners quad_corners(const std::array<Vec3, 4>& quad, const std::array<Vec3, 4>& unit_normal);
 
+// quad_corners of a mesh's quad: its nodes' positions and unit normals looked up.
+inline QuadCorners quad_corners(const Quad& quad, const std::vector<Vec3>& position,
+                                const std::vector<Vec3>& unit_normal) {
+  std::array<Vec3, 4> p, n;
+  for (int i = 0; i < 4; ++i) {
+    p[i] = position[quad[i]];
+    n[i] = unit_normal[quad[i]];
+  }
+  return quad_corners(p, n);
+}
+
 // quad_corners of a quad in the z = 0 plane, every corner signed by +z: only the z
 // components of the cross products are computed. The same values (zeros' signs aside;
 // a test compares the two), for the smoother of planar regions, where quad_corners

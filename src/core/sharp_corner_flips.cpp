@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "core/flat_corner_turns.h"
+#include "core/quads_around_nodes.h"
 #include "core/quality.h"
 
 namespace tquad {
@@ -27,12 +30,7 @@ double angle_between(const Vec3& a, const Vec3& b) {
 double worst_of(const Quad& a, const Quad& b, const std::vector<Vec3>& position, const std::vector<Vec3>& normal) {
   double worst = 1;
   for (const Quad& quad : {a, b}) {
-    std::array<Vec3, 4> p, n;
-    for (int i = 0; i < 4; ++i) {
-      p[i] = position[quad[i]];
-      n[i] = normal[quad[i]];
-    }
-    for (double c : quad_corners(p, n).jacobian) worst = std::min(worst, c);
+    for (double c : quad_corners(quad, position, normal).jacobian) worst = std::min(worst, c);
   }
   return worst;
 }
@@ -41,17 +39,13 @@ class SharpCornerFlipper {
  public:
   SharpCornerFlipper(std::vector<Quad>& quads, int fixed, const std::vector<Vec3>& position,
                      const std::vector<Vec3>& normal, FlipDiagonal diagonal)
-      : quads_(quads), fixed_(fixed), position_(position), normal_(normal), diagonal_(diagonal),
-        around_(position.size()) {
-    for (std::size_t q = 0; q < quads_.size(); ++q) {
-      for (NodeId n : quads_[q]) around_[n].push_back(static_cast<int>(q));
-    }
-  }
+      : fixed_(fixed), position_(position), normal_(normal), diagonal_(diagonal),
+        around_(quads, position.size()) {}
 
   bool flip(NodeId corner) {
-    if (around_[corner].size() != 2) return false;
-    int q1 = around_[corner][0], q2 = around_[corner][1];
-    Quad first = starting_at(quads_[q1], corner), second = starting_at(quads_[q2], corner);
+    if (around_.of(corner).size() != 2) return false;
+    int q1 = around_.of(corner)[0], q2 = around_.of(corner)[1];
+    Quad first = starting_at(around_.quad(q1), corner), second = starting_at(around_.quad(q2), corner);
     // The shared edge runs corner -> d in `second` and d -> corner in `first`
     // (both counter-clockwise): the hexagon is corner, b, c, d, e, f.
     if (first[3] != second[1]) {
@@ -60,7 +54,7 @@ class SharpCornerFlipper {
     }
     if (first[3] != second[1]) return false;
     const NodeId d = first[3];
-    if (d < fixed_ || around_[d].size() < 4) return false;
+    if (d < fixed_ || around_.of(d).size() < 4) return false;
     if (!lopsided_and_sharp(first, second)) return false;
     const std::array<NodeId, 6> hexagon{corner, first[1], first[2], d, second[2], second[3]};
     for (int i = 0; i < 6; ++i) {
@@ -77,8 +71,8 @@ class SharpCornerFlipper {
     std::stable_sort(cuts.begin(), cuts.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
     const std::size_t pick = diagonal_ == FlipDiagonal::better_now ? 0 : 1;
     if (pick >= cuts.size()) return false;
-    set(q1, cuts[pick].second.first);
-    set(q2, cuts[pick].second.second);
+    around_.set(q1, cuts[pick].second.first);
+    around_.set(q2, cuts[pick].second.second);
     return true;
   }
 
@@ -95,19 +89,12 @@ class SharpCornerFlipper {
   }
 
   // The scaled Jacobian of `quad` at its first node.
-  double corner_of(const Quad& quad) const {
-    std::array<Vec3, 4> p, n;
-    for (int i = 0; i < 4; ++i) {
-      p[i] = position_[quad[i]];
-      n[i] = normal_[quad[i]];
-    }
-    return quad_corners(p, n).jacobian[0];
-  }
+  double corner_of(const Quad& quad) const { return quad_corners(quad, position_, normal_).jacobian[0]; }
 
   // Whether nodes p and q are an edge of some quad.
   bool joined(NodeId p, NodeId q) const {
-    for (int r : around_[p]) {
-      const Quad& quad = quads_[r];
+    for (int r : around_.of(p)) {
+      const Quad& quad = around_.quad(r);
       for (int i = 0; i < 4; ++i) {
         if (quad[i] == p && (quad[(i + 1) % 4] == q || quad[(i + 3) % 4] == q)) return true;
       }
@@ -115,18 +102,11 @@ class SharpCornerFlipper {
     return false;
   }
 
-  void set(int q, const Quad& quad) {
-    for (NodeId n : quads_[q]) around_[n].erase(std::find(around_[n].begin(), around_[n].end(), q));
-    quads_[q] = quad;
-    for (NodeId n : quads_[q]) around_[n].push_back(q);
-  }
-
-  std::vector<Quad>& quads_;
   const int fixed_;
   const std::vector<Vec3>& position_;
   const std::vector<Vec3>& normal_;
   const FlipDiagonal diagonal_;
-  std::vector<std::vector<int>> around_;  // each node's quads, kept up to date
+  QuadsAroundNodes around_;  // each node's quads, kept up to date
 };
 
 }  // namespace

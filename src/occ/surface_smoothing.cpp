@@ -3,7 +3,6 @@
 #include <BRepAdaptor_Surface.hxx>
 
 #include <algorithm>
-#include <set>
 
 #include "core/doublets.h"
 #include "core/flat_corner_turns.h"
@@ -70,20 +69,15 @@ std::vector<Vec3> unit_normals(const std::vector<Vec3>& normal) {
   return unit;
 }
 
-// The nodes of the quads of `changed` that `before` lacks, and `rings` rings of
-// nodes around them.
+// The nodes of the quads of `changed` that differ from `before`'s (the layout
+// changes replace quads in place: the same count, the others as they were), and
+// `rings` rings of nodes around them.
 std::vector<bool> around_changed_quads(const std::vector<Quad>& before, const std::vector<Quad>& changed,
                                        std::size_t nodes, int rings) {
-  const auto key = [](Quad q) {
-    std::rotate(q.begin(), std::min_element(q.begin(), q.end()), q.end());
-    return q;
-  };
-  std::set<Quad> kept;
-  for (const Quad& q : before) kept.insert(key(q));
   std::vector<bool> around(nodes, false);
-  for (const Quad& q : changed) {
-    if (kept.count(key(q))) continue;
-    for (NodeId n : q) around[n] = true;
+  for (std::size_t q = 0; q < changed.size(); ++q) {
+    if (q < before.size() && changed[q] == before[q]) continue;
+    for (NodeId n : changed[q]) around[n] = true;
   }
   for (int ring = 0; ring < rings; ++ring) {
     std::vector<bool> grown = around;
@@ -141,13 +135,14 @@ void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<
       layouts.push_back(std::move(turned));
     }
   };
-  if (changes == LayoutChanges::tried) add_turned(mesh.quads);
-  for (FlipDiagonal diagonal : {FlipDiagonal::better_now, FlipDiagonal::other}) {
-    if (changes == LayoutChanges::none) break;
-    std::vector<Quad> flipped = mesh.quads;
-    if (flip_lopsided_sharp_corners(flipped, static_cast<int>(fixed), position, unit, diagonal) > 0) {
-      layouts.push_back(flipped);
-      add_turned(flipped);  // a flip may leave a neighbour alone on a straight boundary
+  if (changes == LayoutChanges::tried) {
+    add_turned(mesh.quads);
+    for (FlipDiagonal diagonal : {FlipDiagonal::better_now, FlipDiagonal::other}) {
+      std::vector<Quad> flipped = mesh.quads;
+      if (flip_lopsided_sharp_corners(flipped, static_cast<int>(fixed), position, unit, diagonal) > 0) {
+        layouts.push_back(flipped);
+        add_turned(flipped);  // a flip may leave a neighbour alone on a straight boundary
+      }
     }
   }
   // A changed layout starts from the nodes where the unchanged one's smoothing left
