@@ -60,6 +60,30 @@ Score score_of(const QuadMesh& mesh, const std::optional<Vec3>& plane_normal) {
   return {q.inverted, q.scaled_jacobian.min, q.scaled_jacobian.avg};
 }
 
+// The candidate sets (candidate_sets) meshed in turn, each kept that beats the best
+// so far, from `best` (the given corners' mesh and its score). Returns how many sets
+// were tried.
+struct Searched {
+  QuadMesh mesh;
+  std::vector<int> corners;
+  Score score;
+};
+int search_corner_sets(const BoundaryLoop& loop, const std::vector<int>& given, const MeshOptions& options,
+                       const std::optional<Vec3>& plane_normal, Searched& best) {
+  int tried = 0;
+  for (const std::vector<int>& corners : candidate_sets(loop, given)) {
+    ++tried;
+    try {
+      QuadMesh mesh = mesh_boundary(BoundaryLoop{loop.points, corners}, options);
+      const Score s = score_of(mesh, plane_normal);
+      if (s.better_than(best.score)) best = {std::move(mesh), corners, s};
+    } catch (const InputError&) {
+      // counts the templates cannot mesh with these curves: one candidate fewer
+    }
+  }
+  return tried;
+}
+
 }  // namespace
 
 std::vector<std::vector<int>> ranked_corner_sets(std::vector<CornerCandidate> candidates,
@@ -100,20 +124,10 @@ CornerSearchResult mesh_boundary_best_corners(const BoundaryLoop& loop, const Me
   const int n = static_cast<int>(loop.points.size());
   CornerSearchResult natural{mesh_boundary(loop, options), given, {}};
   Score natural_score = score_of(natural.mesh, plane_normal);
-  CornerSearchResult best = natural;
-  Score best_score = natural_score;
-  int tried = 0;
-  for (const std::vector<int>& corners : candidate_sets(loop, given)) {
-    ++tried;
-    BoundaryLoop other{loop.points, corners};
-    try {
-      QuadMesh mesh = mesh_boundary(other, options);
-      const Score s = score_of(mesh, plane_normal);
-      if (s.better_than(best_score)) best = {std::move(mesh), corners, {}}, best_score = s;
-    } catch (const InputError&) {
-      // counts the templates cannot mesh with these curves: one candidate fewer
-    }
-  }
+  Searched searched{natural.mesh, given, natural_score};
+  const int tried = search_corner_sets(loop, given, options, plane_normal, searched);
+  CornerSearchResult best{std::move(searched.mesh), std::move(searched.corners), {}};
+  Score best_score = searched.score;
   const bool replaced = best.corners != given;
   if (smooth) {
     // The given corners' mesh smoothed, unless the caller has it already.
@@ -147,6 +161,14 @@ CornerSearchResult mesh_boundary_best_corners(const BoundaryLoop& loop, const Me
   search.chosen_mean = kept_score.mean;
   kept.search = search;
   return std::move(kept);
+}
+
+QuadMesh mesh_patch_best_corners(const BoundaryLoop& loop, const MeshOptions& options, const QuadMesh& given) {
+  const Vec3 up{0, 0, 1};
+  Searched best{given, loop.corners, score_of(given, up)};
+  if (best.score.inverted == 0 && best.score.worst >= kPatchSearchBelow) return given;
+  search_corner_sets(loop, validate_boundary(loop), options, up, best);
+  return std::move(best.mesh);
 }
 
 }  // namespace tquad

@@ -53,4 +53,13 @@ CornerSearchResult mesh_boundary_best_corners(const BoundaryLoop& loop, const Me
                                               const std::optional<Vec3>& plane_normal, bool smooth,
                                               const QuadMesh* given_smoothed = nullptr);
 
+// A patch of a face decomposition searched alike (MeshOptions::search_patch_corners):
+// `given` is its mesh with its given corners (in the z = 0 plane, counter-clockwise,
+// as the decomposition's patches are). Where given's worst corner is under
+// kPatchSearchBelow, the candidate sets are meshed as above and the one that beats
+// given before smoothing returned; else (or when none does) a copy of given. Nothing is
+// smoothed: the face is, whole, and the caller compares it with its natural mesh then.
+constexpr double kPatchSearchBelow = 0.8;
+QuadMesh mesh_patch_best_corners(const BoundaryLoop& loop, const MeshOptions& options, const QuadMesh& given);
+
 }  // namespace tquad

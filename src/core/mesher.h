@@ -22,12 +22,15 @@ struct MeshOptions {
   long long max_quads = 100'000'000;
   // Repair inverted or degenerate quads by local smoothing (untangle.h).
   bool untangle = true;
+  // Mesh each patch of a face decomposition with the corner set among its points that
+  // meshes it best (corner_search.h) where its given corners leave a poor quad.
+  bool search_patch_corners = false;
 };
 
 // Every field equal (a field added above belongs here too).
 inline bool operator==(const MeshOptions& a, const MeshOptions& b) {
   return a.t4_ratio == b.t4_ratio && a.t5_cut_edges == b.t5_cut_edges && a.max_quads == b.max_quads &&
-         a.untangle == b.untangle;
+         a.untangle == b.untangle && a.search_patch_corners == b.search_patch_corners;
 }
 
 // Throws InputError (bad input, message names the point, segment or curve) or

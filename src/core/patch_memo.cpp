@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include "core/corner_search.h"
+
 namespace tquad {
 
 namespace {
@@ -18,7 +20,14 @@ const QuadMesh& PatchMeshMemo::mesh(const BoundaryLoop& loop, const MeshOptions&
       return e.mesh;
     }
   }
-  QuadMesh mesh = mesh_boundary(loop, options);
+  QuadMesh mesh;
+  if (options.search_patch_corners) {
+    MeshOptions given = options;
+    given.search_patch_corners = false;
+    mesh = mesh_patch_best_corners(loop, given, this->mesh(loop, given));  // a deque's references stay valid
+  } else {
+    mesh = mesh_boundary(loop, options);
+  }
   entries_.push_back({loop, options, std::move(mesh)});
   return entries_.back().mesh;
 }

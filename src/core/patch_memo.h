@@ -15,6 +15,8 @@ class PatchMeshMemo {
  public:
   // mesh_boundary(loop, options), computed once per input: the loop's points bit for
   // bit, its corners and the options. A loop the templates refuse throws each time.
+  // With options.search_patch_corners, mesh_patch_best_corners (corner_search.h) from
+  // the given corners' mesh, itself kept as the same options without the search.
   const QuadMesh& mesh(const BoundaryLoop& loop, const MeshOptions& options);
 
  private:

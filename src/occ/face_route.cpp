@@ -194,19 +194,38 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
   std::optional<FaceMeshResult> natural;
   CornerSearch search;
   bool replaced = false;
-  if (options.best_corners && boundary.inner_wires == 0 && !pole && !user_corners) {
+  if (options.best_corners && !pole && !user_corners) {
     natural = *best;
-    const std::vector<std::vector<int>> sets = searched_corner_choices(boundary, natural_corners);
-    search.tried = static_cast<int>(sets.size());
-    for (const std::vector<int>& corners : screened_corner_sets(boundary, sets, options.templates)) {
-      try {
-        FaceMeshResult candidate = mesh_face(index, f, boundary, corners, nodes, options.templates);
-        if (better_worst_then_mean(candidate, *best)) {
-          best = std::move(candidate);
-          replaced = true;
-          other_decompositions.clear();  // the alternatives of a mesh no longer chosen
+    if (boundary.inner_wires == 0) {
+      const std::vector<std::vector<int>> sets = searched_corner_choices(boundary, natural_corners);
+      search.tried = static_cast<int>(sets.size());
+      for (const std::vector<int>& corners : screened_corner_sets(boundary, sets, options.templates)) {
+        try {
+          FaceMeshResult candidate = mesh_face(index, f, boundary, corners, nodes, options.templates);
+          if (better_worst_then_mean(candidate, *best)) {
+            best = std::move(candidate);
+            replaced = true;
+            other_decompositions.clear();  // the alternatives of a mesh no longer chosen
+          }
+        } catch (const std::exception&) {  // a set the templates cannot mesh on the surface is one fewer
         }
-      } catch (const std::exception&) {  // a set the templates cannot mesh on the surface is one fewer
+      }
+    }
+    // And the decomposition with each poor patch's corners searched (holes or not).
+    if (decompose) {
+      MeshOptions searching = options.templates;
+      searching.search_patch_corners = true;
+      try {
+        std::vector<FaceMeshResult> decomposed =
+            mesh_face_decomposed(index.face(f), f, boundary, nodes, index.vertex_count(), size, searching);
+        ++search.tried;
+        if (better_worst_then_mean(decomposed.front(), *best)) {
+          best = std::move(decomposed.front());
+          replaced = true;
+          other_decompositions.assign(std::make_move_iterator(decomposed.begin() + 1),
+                                      std::make_move_iterator(decomposed.end()));
+        }
+      } catch (const std::exception&) {  // the natural choice and the sets above stand
       }
     }
   }

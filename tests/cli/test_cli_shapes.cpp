@@ -415,9 +415,9 @@ TEST_F(ShapeCli, SecondOrderNeedsACadInputAndAFormatThatHoldsIt) {
 
 // ---- --faces -----------------------------------------------------------------------
 
-TEST_F(ShapeCli, BestCornersSearchEveryFaceWithoutHolesAndAreNeverWorse) {
-  // filleted_bracket.brep: faces without holes get a corner_search record, their
-  // chosen worst at least the natural one; face 0's own corners are an instruction.
+TEST_F(ShapeCli, BestCornersSearchEveryFaceAndAreNeverWorse) {
+  // filleted_bracket.brep: its faces get a corner_search record, their chosen worst at
+  // least the natural one.
   const std::string shape = shape_file("filleted_bracket.brep");
   const RunResult natural = run_tquad({"mesh", shape, "-o", path("n.vtu"), "--report", "json"});
   const RunResult best = run_tquad({"mesh", shape, "-o", path("b.vtu"), "--report", "json", "--corners", "best"});
@@ -436,6 +436,24 @@ TEST_F(ShapeCli, BestCornersSearchEveryFaceWithoutHolesAndAreNeverWorse) {
   EXPECT_GE(b["quality"]["scaled_jacobian"]["min"].get<double>(),
             a["quality"]["scaled_jacobian"]["min"].get<double>() - 1e-12);
   EXPECT_EQ(b["quality"]["inverted"], 0);
+}
+
+TEST_F(ShapeCli, BestCornersSearchTheDecompositionsPatchesToo) {
+  // filleted_bracket.brep's faces 1 and 4 (an L with a fillet in its inner corner):
+  // their natural mesh is one T1 (worst 0.58, mean 0.73); the decomposition with its
+  // poor patches' corners searched beats it, and the search keeps it.
+  const json report = report_of(shape_file("filleted_bracket.brep"), "bracket.json", {"--corners", "best"});
+  ASSERT_FALSE(HasFailure());
+  int decomposed = 0;
+  for (const json& face : report["faces"]) {
+    const json& s = face["corner_search"];
+    EXPECT_GE(s["chosen"]["min"].get<double>(), s["natural"]["min"].get<double>() - 1e-12) << face["face"];
+    if (face["template_tree"].get<std::string>().rfind("D", 0) != 0 || !s["changed"].get<bool>()) continue;
+    ++decomposed;
+    EXPECT_GT(s["chosen"]["mean"].get<double>(), s["natural"]["mean"].get<double>() + 0.1) << face["face"];
+  }
+  EXPECT_GE(decomposed, 2);
+  EXPECT_EQ(report["quality"]["inverted"], 0);
 }
 
 TEST_F(ShapeCli, FacesMeshesOnlyThoseFaces) {
