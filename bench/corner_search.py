@@ -1,11 +1,13 @@
 #!/usr/bin/python3
 """--corners best against the natural corner choice, on the shipped boundary examples
-and on every CAD part of a folder, at the default size: worst and mean scaled
-Jacobian, faces where another corner set won, and the time of each run (whole
-process) with its ratio to the natural run, from one run of each on this machine.
+and on every CAD part of a folder, at the default size (the bounding-box diagonal /
+25) or at the diagonal / --divisor (CAD parts; the boundaries keep their counts):
+worst and mean scaled Jacobian, faces where another corner set won, and the time of
+each run (whole process) with its ratio to the natural run, from one run of each on
+this machine.
 
     /usr/bin/python3 bench/corner_search.py [--tquad build/bin/tquad]
-        [--cad-dir ../shared/data/cad] [--markdown]
+        [--cad-dir ../shared/data/cad] [--divisor 25] [--markdown]
 
 Prints one line per input; with --markdown, a table for the README.
 """
@@ -21,8 +23,10 @@ REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CAD_EXTENSIONS = (".step", ".stp", ".brep", ".brp", ".iges", ".igs")
 
 
-def run(tquad, path, best, out_dir):
+def run(tquad, path, best, out_dir, size=None):
     args = [tquad, "mesh", path, "-o", os.path.join(out_dir, "out.vtu"), "--report", "json"]
+    if size is not None:
+        args += ["--size", repr(size)]
     if best:
         args += ["--corners", "best"]
     if path.endswith(CAD_EXTENSIONS):
@@ -36,6 +40,7 @@ def run(tquad, path, best, out_dir):
     sj = report["quality"]["scaled_jacobian"]
     searches = [f["corner_search"] for f in report["faces"] if "corner_search" in f]
     return {"min": sj["min"], "mean": sj["avg"], "quads": report["quads"], "seconds": seconds,
+            "edge_size": report.get("edge_size"),
             "searched": len(searches), "changed": sum(1 for s in searches if s["changed"]),
             "worse_faces": sum(1 for s in searches if s["chosen"]["min"] < s["natural"]["min"] - 1e-12),
             "refused": len(report.get("refused_faces", []))}
@@ -45,6 +50,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--tquad", default=os.path.join(REPO, "build", "bin", "tquad"))
     parser.add_argument("--cad-dir", default=os.path.join(REPO, "..", "shared", "data", "cad"))
+    parser.add_argument("--divisor", type=float, default=25.0,
+                        help="CAD parts at the bounding-box diagonal / this (default 25, tquad's default size)")
     parser.add_argument("--markdown", action="store_true")
     args = parser.parse_args()
     inputs = sorted(os.path.join(REPO, "resources", "boundaries", f)
@@ -60,8 +67,13 @@ def main():
         print("|---|---|---|---|---:|---|---:|")
     with tempfile.TemporaryDirectory() as out_dir:
         for path in inputs:
-            natural = run(args.tquad, path, False, out_dir)
-            best = run(args.tquad, path, True, out_dir)
+            size = None
+            if args.divisor != 25 and path.endswith(CAD_EXTENSIONS):
+                default = run(args.tquad, path, False, out_dir)  # its edge_size is the diagonal / 25
+                if "error" not in default:
+                    size = default["edge_size"] * 25 / args.divisor
+            natural = run(args.tquad, path, False, out_dir, size)
+            best = run(args.tquad, path, True, out_dir, size)
             name = os.path.basename(path)
             if "error" in natural or "error" in best:
                 print(f"{name}: natural {natural.get('error', 'ok')}; best {best.get('error', 'ok')}")

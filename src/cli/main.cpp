@@ -94,8 +94,9 @@ int run_cli(int argc, char** argv) {
   mesh->add_option("--corners", command.corners,
                    "CAD input: corners of a face's curves, as shape vertex indices\n"
                    "(0-based), e.g. --corners 3:0,4,7,2 (repeat for more faces); or 'best':\n"
-                   "try more corner sets (2, 3 or 4 curves) on every other face without holes,\n"
-                   "or on a boundary file's loop,\n"
+                   "try more corner sets (2, 3 or 4 curves) on every other face (its own\n"
+                   "without holes, each poor patch's of its decomposition) or on a boundary\n"
+                   "file's loop,\n"
                    "and keep the best worst, then mean, scaled Jacobian (the report's\n"
                    "corner_search gives the natural choice's beside it)")
       ->type_name("FACE:V1,V2,...");

@@ -55,8 +55,9 @@ _INPUTS = (
      "Move interior nodes on each face's surface to better-shaped quads (never lowering "
      "the worst corner around a node)"),
     ("App::PropertyBool", "BestCorners",
-     "Try more corner sets (2, 3 or 4 curves) on every face without holes and without a "
-     "Corners override, and keep the best worst, then mean, element quality (slower)"),
+     "Try more corner sets (2, 3 or 4 curves) on every face without a Corners override "
+     "(the face's own when it has no holes, and each poor patch's of its decomposition), "
+     "and keep the best worst, then mean, element quality (slower)"),
     ("App::PropertyStringList", "Corners",
      "Corner overrides, one per face: FACE:V1,V2,... with 2 to 4 vertices where the "
      "face's curves begin, as FreeCAD names (Face4:Vertex1,Vertex5,Vertex8) or 0-based "

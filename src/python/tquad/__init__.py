@@ -174,8 +174,9 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
         read_timeout: seconds the reader (a child process, so that a damaged file
             cannot take the interpreter down) may take before the input is refused
             as damaged.
-        best_corners: on each face without holes and without ``corners``, also try
-            other corner sets and keep the best worst, then mean, scaled Jacobian;
+        best_corners: on each face without ``corners``, also try other corner
+            sets (of the face when it has no holes, and of each poor patch of its
+            decomposition) and keep the best worst, then mean, scaled Jacobian;
             each such face's ``corner_search`` gives the natural choice's figures
             beside the chosen ones (the CLI's --corners best).
         order: 1 for four-node quads; 2 adds a node in the middle of every quad
