@@ -23,7 +23,9 @@ double turn_at(const std::vector<Vec3>& p, int i) {
   return std::acos(std::clamp(dot(a, b) / (la * lb), -1.0, 1.0));
 }
 
-std::vector<std::vector<int>> candidate_sets(const BoundaryLoop& loop, const std::vector<int>& given) {
+// The sets a loop's search meshes: its given corners and sharpest points ranked
+// (ranked_corner_sets), the first `limit`.
+std::vector<std::vector<int>> candidate_sets(const BoundaryLoop& loop, const std::vector<int>& given, int limit) {
   const int n = static_cast<int>(loop.points.size());
   std::vector<CornerCandidate> candidates;
   for (int i = 0; i < n; ++i) {
@@ -41,7 +43,7 @@ std::vector<std::vector<int>> candidate_sets(const BoundaryLoop& loop, const std
   if (candidates.size() > static_cast<std::size_t>(kBoundarySearchCandidates)) {
     candidates.resize(kBoundarySearchCandidates);
   }
-  return ranked_corner_sets(std::move(candidates), {given}, kBoundarySearchSets);
+  return ranked_corner_sets(std::move(candidates), {given}, limit);
 }
 
 // Inverted quads, then the worst and mean scaled Jacobian: the order of the search.
@@ -60,18 +62,18 @@ Score score_of(const QuadMesh& mesh, const std::optional<Vec3>& plane_normal) {
   return {q.inverted, q.scaled_jacobian.min, q.scaled_jacobian.avg};
 }
 
-// The candidate sets (candidate_sets) meshed in turn, each kept that beats the best
-// so far, from `best` (the given corners' mesh and its score). Returns how many sets
-// were tried.
+// The first `limit` candidate sets (candidate_sets) meshed in turn, each kept that
+// beats the best so far, from `best` (the given corners' mesh and its score). Returns
+// how many sets were tried.
 struct Searched {
   QuadMesh mesh;
   std::vector<int> corners;
   Score score;
 };
 int search_corner_sets(const BoundaryLoop& loop, const std::vector<int>& given, const MeshOptions& options,
-                       const std::optional<Vec3>& plane_normal, Searched& best) {
+                       const std::optional<Vec3>& plane_normal, int limit, Searched& best) {
   int tried = 0;
-  for (const std::vector<int>& corners : candidate_sets(loop, given)) {
+  for (const std::vector<int>& corners : candidate_sets(loop, given, limit)) {
     ++tried;
     try {
       QuadMesh mesh = mesh_boundary(BoundaryLoop{loop.points, corners}, options);
@@ -125,7 +127,7 @@ CornerSearchResult mesh_boundary_best_corners(const BoundaryLoop& loop, const Me
   CornerSearchResult natural{mesh_boundary(loop, options), given, {}};
   Score natural_score = score_of(natural.mesh, plane_normal);
   Searched searched{natural.mesh, given, natural_score};
-  const int tried = search_corner_sets(loop, given, options, plane_normal, searched);
+  const int tried = search_corner_sets(loop, given, options, plane_normal, kBoundarySearchSets, searched);
   CornerSearchResult best{std::move(searched.mesh), std::move(searched.corners), {}};
   Score best_score = searched.score;
   const bool replaced = best.corners != given;
@@ -167,7 +169,7 @@ QuadMesh mesh_patch_best_corners(const BoundaryLoop& loop, const MeshOptions& op
   const Vec3 up{0, 0, 1};
   Searched best{given, loop.corners, score_of(given, up)};
   if (best.score.inverted == 0 && best.score.worst >= kPatchSearchBelow) return given;
-  search_corner_sets(loop, validate_boundary(loop), options, up, best);
+  search_corner_sets(loop, validate_boundary(loop), options, up, kPatchSearchSets, best);
   return std::move(best.mesh);
 }
 

@@ -407,6 +407,29 @@ TEST(ShapeMeshing, AThinRingsFacingArcsKeepEqualCounts) {
   EXPECT_GT(worst, 0.9);
 }
 
+TEST(ShapeMeshing, APoorFacesDecompositionSearchesItsPatchesCorners) {
+  // linkrods.step face 26: a B-spline wedge 0.5 long, two long sides and two pairs of
+  // tiny arcs. At the default size its corners gave 9 quads, worst 0.266 (the part's
+  // worst); its decomposition's one patch, meshed with the corner set that meshes it
+  // best (MeshOptions::search_patch_corners), gives 0.53.
+  const fs::path part = fs::path(TQUAD_SHARED_CAD_DIR) / "linkrods.step";
+  if (!fs::exists(part)) GTEST_SKIP() << "no " << part << " (the CAD parts are not shipped)";
+  ShapeMeshOptions options;
+  options.keep_going = true;
+  const ShapeMeshResult result = mesh_shape(read_shape(part.string()), options);
+  const auto wedge = std::find_if(result.mesh.faces.begin(), result.mesh.faces.end(),
+                                  [](const FaceMesh& f) { return f.face == 26; });
+  ASSERT_NE(wedge, result.mesh.faces.end());
+  double worst = 1;
+  for (std::int64_t q = wedge->first_quad; q < wedge->first_quad + wedge->quad_count; ++q) {
+    worst = std::min(worst, result.mesh.scaled_jacobian[q]);
+  }
+  std::printf("[ wedge    ] face 26: %s, %lld quads, worst %.3f\n", wedge->template_tree.c_str(),
+              static_cast<long long>(wedge->quad_count), worst);
+  EXPECT_EQ(wedge->template_tree.substr(0, 1), "D");
+  EXPECT_GT(worst, 0.45);
+}
+
 TEST(ShapeMeshing, IgesInput) {
   // The bracket written as IGES (BRep mode, which keeps faces and shared edges) reads
   // back and meshes every face.
