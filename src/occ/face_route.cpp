@@ -97,6 +97,59 @@ std::vector<std::vector<int>> screened_corner_sets(const FaceBoundary& boundary,
   return kept;
 }
 
+// The natural choice's candidates: the best mesh of the routes, the other variants of
+// its decomposition, and the decomposition with its poor patches' corners searched.
+struct NaturalChoice {
+  FaceMeshResult best;
+  std::vector<FaceMeshResult> other_decompositions;
+  std::optional<FaceMeshResult> patches_searched;
+};
+
+// The natural choice smoothed (when `smooth`): its best mesh, or, where smoothing
+// reorders them, another variant or the searched patches (the worst corner, then the
+// mean).
+FaceMeshResult settle_natural_choice(const TopoDS_Face& face, bool seam, const std::vector<Vec3>& nodes, bool smooth,
+                                     NaturalChoice& choice) {
+  FaceMeshResult& best = choice.best;
+  if (!smooth) {
+    if (choice.patches_searched && better_worst_then_mean(*choice.patches_searched, best)) {
+      return std::move(*choice.patches_searched);
+    }
+    return std::move(best);
+  }
+  smooth_face_mesh(face, seam, nodes, best);
+  // The variants are ranked on their meshes before smoothing, which smoothing can
+  // reorder (linkrods.step face 4 at diagonal / 50: 0.26 against 0.13 smoothed, the
+  // other way round before): each is smoothed too (a quick look, then the most
+  // promising in full), and the best after smoothing kept (the worst corner, then the
+  // mean: variants differ here and there, and often share their worst quad).
+  std::vector<FaceMeshResult>& others = choice.other_decompositions;
+  if (best.inverted == 0 && best.collapsed == 0 && best.worst_corner >= kSmoothVariantsBelow) others.clear();
+  // Each looked at with a few passes, and the best of them smoothed in full.
+  std::size_t promising = 0;
+  std::optional<FaceMeshResult> promising_look;
+  for (std::size_t k = 0; k < others.size(); ++k) {
+    FaceMeshResult look = others[k];
+    smooth_face_mesh(face, seam, nodes, look, kVariantLook, LayoutChanges::none);
+    if (!promising_look || better_worst_then_mean(look, *promising_look)) {
+      promising = k;
+      promising_look = std::move(look);
+    }
+  }
+  if (promising_look) {
+    FaceMeshResult& other = others[promising];
+    smooth_face_mesh(face, seam, nodes, other);
+    if (better_worst_then_mean(other, best)) best = std::move(other);
+  }
+  // Ranked before smoothing, searched patches won on 918_pump_carter_sup_21_03_2006.stp
+  // at D/100 and ended lower (0.396 -> 0.345): they are judged smoothed.
+  if (choice.patches_searched) {
+    smooth_face_mesh(face, seam, nodes, *choice.patches_searched);
+    if (better_worst_then_mean(*choice.patches_searched, best)) best = std::move(*choice.patches_searched);
+  }
+  return std::move(best);
+}
+
 // The face's mesh, the one place where the algorithm per face is chosen:
 //   - no hole: the templates on each corner choice (face_corners.h), and for a disk
 //     (one smooth loop) the disk's O-grid (disk_o_grid.h);
@@ -209,103 +262,55 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     if (refusal_code == RefusalCode::internal) throw std::runtime_error(refusal);
     throw FaceRefusalError(refusal_code, refusal);
   }
-  // --corners best: more corner sets compete with the routes above (the natural choice).
-  std::optional<FaceMeshResult> natural;
+  // --corners best: more corner sets compete with the routes above (the natural
+  // choice): the one that beats it before smoothing is smoothed and kept if it beats
+  // the natural choice smoothed too, so no face ends worse than without the search.
+  std::optional<FaceMeshResult> searched;
   CornerSearch search;
-  bool replaced = false;
-  if (options.best_corners && !pole && !user_corners) {
-    natural = *best;
+  const bool search_corners = options.best_corners && !pole && !user_corners;
+  if (search_corners) {
+    const auto compete = [&](FaceMeshResult&& candidate) {
+      if (better_worst_then_mean(candidate, searched ? *searched : *best)) searched = std::move(candidate);
+    };
     if (boundary.inner_wires == 0) {
       const std::vector<std::vector<int>> sets = searched_corner_choices(boundary, natural_corners);
       search.tried = static_cast<int>(sets.size());
       for (const std::vector<int>& corners : screened_corner_sets(boundary, sets, options.templates)) {
         try {
-          FaceMeshResult candidate = mesh_face(index, f, boundary, corners, nodes, options.templates);
-          if (better_worst_then_mean(candidate, *best)) {
-            best = std::move(candidate);
-            replaced = true;
-            other_decompositions.clear();  // the alternatives of a mesh no longer chosen
-          }
+          compete(mesh_face(index, f, boundary, corners, nodes, options.templates));
         } catch (const std::exception&) {  // a set the templates cannot mesh on the surface is one fewer
         }
       }
     }
-    // And the decomposition with each poor patch's corners searched, holes or not
-    // (before smoothing here; else after it, below).
-    if (decompose && !patches_tried) search_patches();
-    if (patches_searched) {
-      ++search.tried;
-      if (better_worst_then_mean(*patches_searched, *best)) {
-        best = std::move(*patches_searched);
-        patches_searched.reset();
-        replaced = true;
-        other_decompositions.clear();  // the alternatives of a mesh no longer chosen
-      }
+    // And the decomposition with each poor patch's corners searched, holes or not:
+    // where the natural choice has it already (a poor face), it stays there.
+    if (decompose && !patches_tried) {
+      search_patches();
+      if (patches_searched) compete(std::move(*patches_searched));
+      patches_searched.reset();
     }
+    if (patches_tried) ++search.tried;
   }
   // Every candidate route counts, the rejected ones too.
-  best->meshing_seconds = seconds_since(start);
+  const double meshing_seconds = seconds_since(start);
   const bool seam = std::find(boundary.is_seam.begin(), boundary.is_seam.end(), 1) != boundary.is_seam.end();
-  if (options.smooth) {
-    const auto smoothing = std::chrono::steady_clock::now();
-    smooth_face_mesh(index.face(f), seam, nodes, *best);
-    // The variants are ranked on their meshes before smoothing, which smoothing can
-    // reorder (linkrods.step face 4 at diagonal / 50: 0.26 against 0.13 smoothed, the
-    // other way round before): each is smoothed too (a quick look, then the most
-    // promising in full), and the best after smoothing kept (the worst corner, then the
-    // mean: variants differ here and there, and often share their worst quad).
-    if (best->inverted == 0 && best->collapsed == 0 && best->worst_corner >= kSmoothVariantsBelow) {
-      other_decompositions.clear();
-    }
-    // Each looked at with a few passes, and the best of them smoothed in full.
-    std::size_t promising = 0;
-    std::optional<FaceMeshResult> promising_look;
-    for (std::size_t k = 0; k < other_decompositions.size(); ++k) {
-      FaceMeshResult look = other_decompositions[k];
-      smooth_face_mesh(index.face(f), seam, nodes, look, kVariantLook, LayoutChanges::none);
-      if (!promising_look || better_worst_then_mean(look, *promising_look)) {
-        promising = k;
-        promising_look = std::move(look);
-      }
-    }
-    if (promising_look) {
-      FaceMeshResult& other = other_decompositions[promising];
-      smooth_face_mesh(index.face(f), seam, nodes, other);
-      if (better_worst_then_mean(other, *best)) {
-        other.meshing_seconds = best->meshing_seconds;
-        best = std::move(other);
-      }
-    }
-    // Ranked before smoothing, searched patches won on 918_pump_carter_sup_21_03_2006.stp
-    // at D/100 and ended lower (0.396 -> 0.345): they are judged smoothed.
-    if (patches_searched) {
-      smooth_face_mesh(index.face(f), seam, nodes, *patches_searched);
-      if (better_worst_then_mean(*patches_searched, *best)) {
-        patches_searched->meshing_seconds = best->meshing_seconds;
-        best = std::move(*patches_searched);
-      }
-    }
-    best->smoothing_seconds = seconds_since(smoothing);
-  } else if (patches_searched && better_worst_then_mean(*patches_searched, *best)) {
-    best = std::move(*patches_searched);
-  }
-  if (natural && !replaced) natural = *best;  // the natural choice stayed (smoothed now)
-  if (natural) {
-    // The search compared meshes before smoothing; smoothed, the natural choice may
-    // still be the better one, and then it stays: never worse than without the search.
-    if (options.smooth && replaced) smooth_face_mesh(index.face(f), seam, nodes, *natural);
-    search.natural_worst = natural->worst_corner;
-    search.natural_mean = mean_scaled_jacobian(*natural);
-    search.changed = better_worst_then_mean(*best, *natural);
-    if (!search.changed) {
-      natural->meshing_seconds = best->meshing_seconds;
-      natural->smoothing_seconds = best->smoothing_seconds;
-      best = std::move(natural);
+  const auto smoothing = std::chrono::steady_clock::now();
+  NaturalChoice natural{std::move(*best), std::move(other_decompositions), std::move(patches_searched)};
+  best = settle_natural_choice(index.face(f), seam, nodes, options.smooth, natural);
+  if (search_corners) {
+    search.natural_worst = best->worst_corner;
+    search.natural_mean = mean_scaled_jacobian(*best);
+    if (searched) {
+      if (options.smooth) smooth_face_mesh(index.face(f), seam, nodes, *searched);
+      search.changed = better_worst_then_mean(*searched, *best);
+      if (search.changed) best = std::move(searched);
     }
     search.chosen_worst = best->worst_corner;
     search.chosen_mean = mean_scaled_jacobian(*best);
     best->corner_search = search;
   }
+  best->meshing_seconds = meshing_seconds;
+  if (options.smooth) best->smoothing_seconds = seconds_since(smoothing);
   if (best->inverted > 0 && !options.allow_inverted) {
     char worst[32];
     std::snprintf(worst, sizeof worst, "%.3g", best->worst_corner);
