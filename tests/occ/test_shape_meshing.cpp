@@ -383,6 +383,31 @@ TEST(ShapeMeshing, WasherHalvesShareTheRingBalanceEvenly) {
   EXPECT_GT(worst, 0.8);
 }
 
+// One face of a part meshed whole at the default size (--keep-going): its template
+// tree and its worst scaled Jacobian, printed.
+struct MeshedFace {
+  bool found = false;
+  std::string template_tree;
+  double worst = 1;
+};
+MeshedFace meshed_face(const fs::path& part, int face) {
+  ShapeMeshOptions options;
+  options.keep_going = true;
+  const ShapeMeshResult result = mesh_shape(read_shape(part.string()), options);
+  MeshedFace out;
+  for (const FaceMesh& f : result.mesh.faces) {
+    if (f.face != face) continue;
+    out.found = true;
+    out.template_tree = f.template_tree;
+    for (std::int64_t q = f.first_quad; q < f.first_quad + f.quad_count; ++q) {
+      out.worst = std::min(out.worst, result.mesh.scaled_jacobian[q]);
+    }
+    std::printf("[ face     ] %s face %d: %s, %lld quads, worst %.3f\n", part.filename().c_str(), face,
+                f.template_tree.c_str(), static_cast<long long>(f.quad_count), out.worst);
+  }
+  return out;
+}
+
 TEST(ShapeMeshing, AThinRingsFacingArcsKeepEqualCounts) {
   // SampleCrankshaft4A.stp face 103: a flat ring 3.2 wide between radii 25.4 and
   // 28.6, each circle two half arcs, the outer ones shared with a cylinder. At the
@@ -391,20 +416,10 @@ TEST(ShapeMeshing, AThinRingsFacingArcsKeepEqualCounts) {
   // decomposed into 35 quads of mean 0.47; facing arcs chained, it is one ring.
   const fs::path part = fs::path(TQUAD_SHARED_CAD_DIR) / "SampleCrankshaft4A.stp";
   if (!fs::exists(part)) GTEST_SKIP() << "no " << part << " (the CAD parts are not shipped)";
-  ShapeMeshOptions options;
-  options.keep_going = true;
-  const ShapeMeshResult result = mesh_shape(read_shape(part.string()), options);
-  const auto ring = std::find_if(result.mesh.faces.begin(), result.mesh.faces.end(),
-                                 [](const FaceMesh& f) { return f.face == 103; });
-  ASSERT_NE(ring, result.mesh.faces.end());
-  double worst = 1;
-  for (std::int64_t q = ring->first_quad; q < ring->first_quad + ring->quad_count; ++q) {
-    worst = std::min(worst, result.mesh.scaled_jacobian[q]);
-  }
-  std::printf("[ ring     ] face 103: %s, %lld quads, worst %.3f\n", ring->template_tree.c_str(),
-              static_cast<long long>(ring->quad_count), worst);
-  EXPECT_EQ(ring->template_tree.substr(0, 1), "R");
-  EXPECT_GT(worst, 0.9);
+  const MeshedFace ring = meshed_face(part, 103);
+  ASSERT_TRUE(ring.found);
+  EXPECT_EQ(ring.template_tree.substr(0, 1), "R");
+  EXPECT_GT(ring.worst, 0.9);
 }
 
 TEST(ShapeMeshing, APoorFacesDecompositionSearchesItsPatchesCorners) {
@@ -414,20 +429,10 @@ TEST(ShapeMeshing, APoorFacesDecompositionSearchesItsPatchesCorners) {
   // best (MeshOptions::search_patch_corners), gives 0.53.
   const fs::path part = fs::path(TQUAD_SHARED_CAD_DIR) / "linkrods.step";
   if (!fs::exists(part)) GTEST_SKIP() << "no " << part << " (the CAD parts are not shipped)";
-  ShapeMeshOptions options;
-  options.keep_going = true;
-  const ShapeMeshResult result = mesh_shape(read_shape(part.string()), options);
-  const auto wedge = std::find_if(result.mesh.faces.begin(), result.mesh.faces.end(),
-                                  [](const FaceMesh& f) { return f.face == 26; });
-  ASSERT_NE(wedge, result.mesh.faces.end());
-  double worst = 1;
-  for (std::int64_t q = wedge->first_quad; q < wedge->first_quad + wedge->quad_count; ++q) {
-    worst = std::min(worst, result.mesh.scaled_jacobian[q]);
-  }
-  std::printf("[ wedge    ] face 26: %s, %lld quads, worst %.3f\n", wedge->template_tree.c_str(),
-              static_cast<long long>(wedge->quad_count), worst);
-  EXPECT_EQ(wedge->template_tree.substr(0, 1), "D");
-  EXPECT_GT(worst, 0.45);
+  const MeshedFace wedge = meshed_face(part, 26);
+  ASSERT_TRUE(wedge.found);
+  EXPECT_EQ(wedge.template_tree.substr(0, 1), "D");
+  EXPECT_GT(wedge.worst, 0.45);
 }
 
 TEST(ShapeMeshing, IgesInput) {
