@@ -62,8 +62,9 @@ CornerSearchResult mesh_boundary_best_corners(const BoundaryLoop& loop, const Me
 // its mesh without the search then. Measured on the 16 parts at D/25 and D/100:
 // patches searched from 0.5 instead raised fewer means (as1-tu-203.stp 0.8753
 // against 0.8782 at D/25); 12 sets instead of 40 halved the search's meshing time
-// (918_pump at D/100 1.1 -> 0.5 s) for the same worst quads on every part, 6 lost
-// linkrods.step's gain at D/25 (0.353 -> 0.266).
+// (918_pump at D/100 1.1 -> 0.5 s) with the same worst quads on every part but one,
+// higher there (as1-tu-203.stp at D/100 0.487 -> 0.500; both judged before
+// smoothing); 6 lost linkrods.step's gain at D/25 (0.353 -> 0.266).
 constexpr double kPatchSearchBelow = 0.8;
 constexpr int kPatchSearchSets = 12;
 QuadMesh mesh_patch_best_corners(const BoundaryLoop& loop, const MeshOptions& options, const QuadMesh& given);

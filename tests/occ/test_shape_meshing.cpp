@@ -383,29 +383,26 @@ TEST(ShapeMeshing, WasherHalvesShareTheRingBalanceEvenly) {
   EXPECT_GT(worst, 0.8);
 }
 
-// One face of a part meshed whole at the default size (--keep-going): its template
-// tree and its worst scaled Jacobian, printed.
-struct MeshedFace {
-  bool found = false;
-  std::string template_tree;
-  double worst = 1;
-};
-MeshedFace meshed_face(const fs::path& part, int face) {
+// One face of a shared part meshed whole at the default size (--keep-going): its
+// template tree begins with `tree` and its worst scaled Jacobian (printed) is over
+// `worst_above`. Skips when the parts are absent.
+void expect_shared_part_face(const std::string& file, int face, const std::string& tree, double worst_above) {
+  const fs::path part = fs::path(TQUAD_SHARED_CAD_DIR) / file;
+  if (!fs::exists(part)) GTEST_SKIP() << "no " << part << " (the CAD parts are not shipped)";
   ShapeMeshOptions options;
   options.keep_going = true;
   const ShapeMeshResult result = mesh_shape(read_shape(part.string()), options);
-  MeshedFace out;
-  for (const FaceMesh& f : result.mesh.faces) {
-    if (f.face != face) continue;
-    out.found = true;
-    out.template_tree = f.template_tree;
-    for (std::int64_t q = f.first_quad; q < f.first_quad + f.quad_count; ++q) {
-      out.worst = std::min(out.worst, result.mesh.scaled_jacobian[q]);
-    }
-    std::printf("[ face     ] %s face %d: %s, %lld quads, worst %.3f\n", part.filename().c_str(), face,
-                f.template_tree.c_str(), static_cast<long long>(f.quad_count), out.worst);
+  const auto meshed = std::find_if(result.mesh.faces.begin(), result.mesh.faces.end(),
+                                   [&](const FaceMesh& f) { return f.face == face; });
+  ASSERT_NE(meshed, result.mesh.faces.end()) << file << " face " << face;
+  double worst = 1;
+  for (std::int64_t q = meshed->first_quad; q < meshed->first_quad + meshed->quad_count; ++q) {
+    worst = std::min(worst, result.mesh.scaled_jacobian[q]);
   }
-  return out;
+  std::printf("[ face     ] %s face %d: %s, %lld quads, worst %.3f\n", file.c_str(), face,
+              meshed->template_tree.c_str(), static_cast<long long>(meshed->quad_count), worst);
+  EXPECT_EQ(meshed->template_tree.substr(0, tree.size()), tree);
+  EXPECT_GT(worst, worst_above);
 }
 
 TEST(ShapeMeshing, AThinRingsFacingArcsKeepEqualCounts) {
@@ -414,12 +411,7 @@ TEST(ShapeMeshing, AThinRingsFacingArcsKeepEqualCounts) {
   // default size the ring's loop totals were balanced (14 and 14) but its outer arcs
   // ended at 6 and 8 against 7 and 7 inside, the mapped ring folded and the face was
   // decomposed into 35 quads of mean 0.47; facing arcs chained, it is one ring.
-  const fs::path part = fs::path(TQUAD_SHARED_CAD_DIR) / "SampleCrankshaft4A.stp";
-  if (!fs::exists(part)) GTEST_SKIP() << "no " << part << " (the CAD parts are not shipped)";
-  const MeshedFace ring = meshed_face(part, 103);
-  ASSERT_TRUE(ring.found);
-  EXPECT_EQ(ring.template_tree.substr(0, 1), "R");
-  EXPECT_GT(ring.worst, 0.9);
+  expect_shared_part_face("SampleCrankshaft4A.stp", 103, "R", 0.9);
 }
 
 TEST(ShapeMeshing, APoorFacesDecompositionSearchesItsPatchesCorners) {
@@ -427,12 +419,7 @@ TEST(ShapeMeshing, APoorFacesDecompositionSearchesItsPatchesCorners) {
   // tiny arcs. At the default size its corners gave 9 quads, worst 0.266 (the part's
   // worst); its decomposition's one patch, meshed with the corner set that meshes it
   // best (MeshOptions::search_patch_corners), gives 0.53.
-  const fs::path part = fs::path(TQUAD_SHARED_CAD_DIR) / "linkrods.step";
-  if (!fs::exists(part)) GTEST_SKIP() << "no " << part << " (the CAD parts are not shipped)";
-  const MeshedFace wedge = meshed_face(part, 26);
-  ASSERT_TRUE(wedge.found);
-  EXPECT_EQ(wedge.template_tree.substr(0, 1), "D");
-  EXPECT_GT(wedge.worst, 0.45);
+  expect_shared_part_face("linkrods.step", 26, "D", 0.45);
 }
 
 TEST(ShapeMeshing, IgesInput) {
