@@ -7,6 +7,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/prctl.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -60,6 +61,14 @@ bool write_all(int fd, const std::string& bytes) {
   // the caller installed (FreeCAD's turn SIGSEGV into a C++ exception; a fuzzer's
   // write a crash report) must not run on the reader's state.
   for (const int fatal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) signal(fatal, SIG_DFL);
+  // Nor may its crash be dumped: the child's pipe closes only after the dump, and
+  // where the system pipes dumps to a collector the parent waits for it. A CI run
+  // reported this crash, read from Python, as a 300 s read timeout; here a collector
+  // that slept 15 s before reading delayed the reply by 15 s. A process that is not
+  // dumpable is never dumped (and leaves no core file).
+  prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
+  const rlimit no_core{0, 0};
+  setrlimit(RLIMIT_CORE, &no_core);
   // OpenCASCADE's readers print their complaints; the caller's stdout (a JSON report)
   // and stderr (one line per error) are not theirs.
   const int devnull = open("/dev/null", O_WRONLY);
