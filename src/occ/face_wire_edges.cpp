@@ -9,19 +9,26 @@
 
 namespace tquad {
 
-std::optional<WireEdges> face_wire_edges(const ShapeIndex& index, int face) {
+WireEdges face_wires_with_poles(const ShapeIndex& index, int face) {
   const TopoDS_Face& f = index.face(face);
-  std::vector<std::vector<int>> wires;
+  WireEdges wires;
   const TopoDS_Wire outer = BRepTools::OuterWire(f);
   for (TopExp_Explorer w(f, TopAbs_WIRE); w.More(); w.Next()) {
     const TopoDS_Wire wire = TopoDS::Wire(w.Current());
     std::vector<int> edges;
     for (BRepTools_WireExplorer it(wire, f); it.More(); it.Next()) {
-      if (BRep_Tool::Degenerated(it.Current())) return std::nullopt;
-      edges.push_back(index.edge_index(it.Current()));
+      edges.push_back(BRep_Tool::Degenerated(it.Current()) ? kPoleEdge : index.edge_index(it.Current()));
     }
     if (wire.IsSame(outer)) wires.insert(wires.begin(), std::move(edges));
     else wires.push_back(std::move(edges));
+  }
+  return wires;
+}
+
+std::optional<WireEdges> face_wire_edges(const ShapeIndex& index, int face) {
+  WireEdges wires = face_wires_with_poles(index, face);
+  for (const auto& wire : wires) {
+    for (int e : wire) if (e == kPoleEdge) return std::nullopt;
   }
   return wires;
 }

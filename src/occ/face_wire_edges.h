@@ -13,6 +13,14 @@ namespace tquad {
 using WireEdges = std::vector<std::vector<int>>;
 std::optional<WireEdges> face_wire_edges(const ShapeIndex& index, int face);
 
+// The edge that stands for a degenerate edge (a pole) in face_wires_with_poles.
+inline constexpr int kPoleEdge = -1;
+
+// A face's wires as edge lists in the order the wire explorer walks them (the outer
+// wire first), degenerate edges as kPoleEdge: the one walk face_wire_edges and the
+// three-edge faces beside poles (interval_assignment.h) read.
+WireEdges face_wires_with_poles(const ShapeIndex& index, int face);
+
 // face_wire_edges of each face, computed when first asked and kept: a wire explorer
 // computes the face's (u, v) bounds on cones and spline surfaces (a pass over every
 // pcurve), and the interval assignment asks three times per face and round (a fifth

@@ -1,9 +1,7 @@
 #include "occ/interval_assignment.h"
 
 #include <BRepAdaptor_Curve.hxx>
-#include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
-#include <TopoDS.hxx>
 #include <TopExp_Explorer.hxx>
 
 #include <cmath>
@@ -158,15 +156,10 @@ namespace {
 // ones (a pole at a corner: a quarter of a disk made with its centre collapsed, as
 // tank.brep's end caps, is meshed as a triangle); nothing for other faces.
 std::optional<std::vector<int>> three_edges(const ShapeIndex& index, int face) {
-  const TopoDS_Face& f = index.face(face);
+  const WireEdges wires = face_wires_with_poles(index, face);
+  if (wires.size() != 1) return std::nullopt;
   std::vector<int> edges;
-  int wires = 0;
-  for (TopExp_Explorer w(f, TopAbs_WIRE); w.More(); w.Next()) {
-    if (++wires > 1) return std::nullopt;
-    for (BRepTools_WireExplorer it(TopoDS::Wire(w.Current()), f); it.More(); it.Next()) {
-      if (!BRep_Tool::Degenerated(it.Current())) edges.push_back(index.edge_index(it.Current()));
-    }
-  }
+  for (int e : wires[0]) if (e != kPoleEdge) edges.push_back(e);
   if (edges.size() != 3 || edges[0] == edges[1] || edges[1] == edges[2] || edges[0] == edges[2]) return std::nullopt;
   return edges;
 }
