@@ -62,6 +62,19 @@ TEST(BadBoundaries, ZeroLengthSegment) {
   expect_refused(loop, "segment 2 from point 2 to point 3 has zero length");
 }
 
+TEST(BadBoundaries, SegmentShorterThanRoundingOfTheExtent) {
+  // Two points one unit in the last place apart (a fuzzed loop; its T3 split's
+  // parameter rounded to 1 and the centre became NaN): refused, named, with the length.
+  BoundaryLoop loop = square();
+  loop.points[3] = loop.points[2];
+  loop.points[3].y = std::nextafter(loop.points[3].y, 10.0);
+  expect_refused(loop, "segment 2 from point 2 to point 3 is ");
+  expect_refused(loop, "long, under 1e-12 of the boundary's extent: its points coincide but for rounding");
+  // A millionth of the extent is a short segment, not a degenerate one.
+  loop.points[3].y = loop.points[2].y + 1e-6;
+  EXPECT_NO_THROW(validate_boundary(loop));
+}
+
 TEST(BadBoundaries, SelfIntersectingPlanarBoundary) {
   // A bow-tie: the loop (0,0) (1,1) (1,0) (0,1) crosses itself.
   BoundaryLoop loop;

@@ -2,6 +2,7 @@
 // fault must be found and named. The property tests only show it accepts valid meshes.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -102,6 +103,17 @@ TEST(MeshValidation, FindsCoincidentNodesIncludingSignedZeros) {
   mesh = grid_2x2();
   mesh.nodes[8] = {-0.0, 0.0, -0.0};  // equal to node 0 at (0, 0, 0)
   EXPECT_TRUE(names(check_disk_mesh(mesh, 8), "nodes 0 and 8 are at the same position"));
+}
+
+TEST(MeshValidation, FindsANonFiniteNode) {
+  // A NaN equals nothing, so the coincidence test alone would let two NaN nodes pass
+  // (a fuzzed T3 split once put its centre and cuts there).
+  QuadMesh mesh = grid_2x2();
+  mesh.nodes[8].y = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(names(check_disk_mesh(mesh, 8), "node 8 has a coordinate that is NaN or infinite"));
+  mesh = grid_2x2();
+  mesh.nodes[8].z = -std::numeric_limits<double>::infinity();
+  EXPECT_TRUE(names(check_disk_mesh(mesh, 8), "node 8 has a coordinate that is NaN or infinite"));
 }
 
 TEST(MeshValidation, FindsANodeCountNoDiskHas) {

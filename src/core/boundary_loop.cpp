@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <tuple>
 
@@ -89,11 +90,25 @@ void check_points(const BoundaryLoop& loop) {
                        " coincide: the boundary touches itself");
     }
   }
+  Vec3 low = loop.points[0], high = loop.points[0];
+  for (const Vec3& p : loop.points) {
+    low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+    high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+  }
+  const double shortest_allowed = kShortestSegmentFraction * norm(high - low);
   for (int i = 0; i < n; ++i) {
     const int j = (i + 1) % n;
     if (loop.points[i] == loop.points[j]) {
       throw InputError("segment " + std::to_string(i) + " from point " + std::to_string(i) +
                        " to point " + std::to_string(j) + " has zero length");
+    }
+    const double length = norm(loop.points[j] - loop.points[i]);
+    if (length < shortest_allowed) {
+      char text[96];
+      std::snprintf(text, sizeof text, " is %.3g long, under %g of the boundary's extent", length,
+                    kShortestSegmentFraction);
+      throw InputError("segment " + std::to_string(i) + " from point " + std::to_string(i) + " to point " +
+                       std::to_string(j) + text + ": its points coincide but for rounding");
     }
   }
 }

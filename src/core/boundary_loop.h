@@ -13,6 +13,12 @@ namespace tquad {
 // stay far inside double's range.
 constexpr double kMaxCoordinate = 1e12;
 
+// A segment shorter than this fraction of the loop's bounding-box diagonal joins two
+// points that coincide but for rounding: refused as degenerate. A fuzzed loop whose
+// segment was one unit in the last place long made a T3 split's parameter exactly 1
+// and its centre NaN.
+constexpr double kShortestSegmentFraction = 1e-12;
+
 struct BoundaryLoop {
   std::vector<Vec3> points;
   std::vector<int> corners;

@@ -102,6 +102,10 @@ std::uint64_t position_hash(const Vec3& p) {
 }
 
 std::string check_nodes(const QuadMesh& mesh) {
+  // A NaN node equals no other, so the coincidence test below would pass it.
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+    if (!is_finite(mesh.nodes[i])) return "node " + std::to_string(i) + " has a coordinate that is NaN or infinite";
+  }
   std::vector<char> used(mesh.nodes.size(), 0);
   for (const Quad& q : mesh.quads) for (NodeId id : q) used[id] = 1;
   for (std::size_t i = 0; i < used.size(); ++i) {

@@ -16,7 +16,7 @@ namespace tquad {
 //   - conforming and consistently oriented: each directed edge in at most one quad,
 //     each interior edge in exactly two (once per direction), and the edges in one
 //     quad only are exactly the boundary segments i -> i+1;
-//   - every node used; no two nodes at the same position;
+//   - every node finite and used; no two nodes at the same position;
 //   - V = 1 + F + E/2 (Euler's formula for a disk of quads).
 std::string check_disk_mesh(const QuadMesh& mesh, int boundary_points);
 

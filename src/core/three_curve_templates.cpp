@@ -1,4 +1,6 @@
 // T3 and T4: templates of three-curve regions (paper, Figure 3(c) and 3(d)).
+#include <algorithm>
+
 #include "core/patch_maps.h"
 #include "core/template_realization.h"
 
@@ -45,7 +47,14 @@ Barycentric normalized(double l0, double l1, double l2) {
 // property cases it beat the mean of the three split nodes (mean worst scaled
 // Jacobian of convex three-curve meshes before repair 0.232 against 0.205) and
 // barycentric weights from the line counts (0.232 against -0.07).
+//
+// A split node's parameter is strictly inside (0, 1), but rounds to 0 or 1 where the
+// segments on one side of it are below the rounding of the curve's length (a fuzzed
+// curve ending in a segment 1e-16 long): each is kept kSplitParameterMargin inside,
+// so that no ratio below is infinite and the centre NaN.
+constexpr double kSplitParameterMargin = 1e-12;
 Barycentric trimap_centre(double t0, double t1, double t2) {
+  for (double* t : {&t0, &t1, &t2}) *t = std::clamp(*t, kSplitParameterMargin, 1 - kSplitParameterMargin);
   const double r0 = (1 - t0) / t0;  // l0 / l1 on the cevian from V2 through M0
   const double r1 = (1 - t1) / t1;  // l1 / l2 on the cevian from V0 through M1
   const double r2 = (1 - t2) / t2;  // l2 / l0 on the cevian from V1 through M2

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/mesh_edges.h"
+#include "core/vec3.h"
 
 namespace tquad {
 
@@ -55,6 +56,9 @@ void check_shape_mesh(const ShapeMesh& mesh) {
       fail(std::string(name) + " has " + std::to_string(values->size()) + " values for " +
            std::to_string(mesh.quads.size()) + " quads");
     }
+  }
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+    if (!is_finite(mesh.nodes[i])) fail("node " + std::to_string(i) + " has a coordinate that is NaN or infinite");
   }
   check_node_indices("quads", mesh.quads, node_count);
   if (mesh.second_order() && mesh.mid_nodes.size() != mesh.quads.size()) {

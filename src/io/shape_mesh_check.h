@@ -1,5 +1,6 @@
 // check_shape_mesh: what every mesh writer relies on in a ShapeMesh, checked before a
 // byte is written (so a bad mesh never becomes a wrong file):
+//   - every node's coordinates are finite (a binary writer would copy a NaN as it is);
 //   - every quad's node indices are in [0, nodes.size());
 //   - the face records are in quad order and own every quad exactly once: the first
 //     starts at quad 0, each next one starts where the previous ended, the last ends at

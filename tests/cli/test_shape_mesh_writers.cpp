@@ -373,6 +373,8 @@ TEST_F(WriterChecks, InconsistentShapeMeshesAreRefusedBeforeWriting) {
       {"duplicate face", [](ShapeMesh& m) { m.faces[1].face = 3; }},
       {"negative face", [](ShapeMesh& m) { m.faces[0].face = -1; }},
       {"refused and meshed", [](ShapeMesh& m) { m.refused_faces[0].face = 7; }},
+      // A binary writer (.vtu) would copy it as it is.
+      {"a NaN node", [](ShapeMesh& m) { m.nodes[4].x = std::numeric_limits<double>::quiet_NaN(); }},
   };
   const std::vector<std::pair<std::string, std::function<void(const std::string&, const ShapeMesh&)>>> writers = {
       {"json", [](const std::string& p, const ShapeMesh& m) { write_mesh_json_file(p, m); }},

@@ -12,6 +12,7 @@ run as a program it prints the README's table from a fresh run:
 (with PYTHONPATH holding the built tquad package for the Python column).
 """
 import json
+import math
 import os
 import resource
 import subprocess
@@ -76,6 +77,14 @@ def _touching_points():
     points = [(0, 0, 0), (1, 0, 0), (2, 0, 0), (3, 0, 1), (4, 0, 0), (4, 1, 0), (4, 2, 0), (4, 3, 0),
               (3, 3, 0), (2.5, 2, 0.5), (2, 0, 0), (1, 3, 0), (0, 3, 0), (0, 2, 0), (0, 1, 0), (0, 0.5, 0)]
     return points, [0, 4, 8, 12]
+
+
+def _rounding_apart_points():
+    # Point 2 one unit in the last place from point 1 (a fuzzed loop like it once gave
+    # a T3 split a NaN centre).
+    points = list(GOOD_POINTS)
+    points[2] = (math.nextafter(1.0, 2.0), 0.0)
+    return points, GOOD_CORNERS
 
 
 def _huge_points():
@@ -153,6 +162,8 @@ def cases() -> List[Case]:
         _boundary_case("self-intersecting boundary", _self_crossing_points, ["cross"]),
         _boundary_case("coordinates near 1e308", _huge_points, ["point 1", "beyond 1e12"]),
         _boundary_case("non-planar loop that touches itself", _touching_points, ["points 2 and 10 coincide"]),
+        _boundary_case("two points one rounding apart", _rounding_apart_points,
+                       ["segment 1 from point 1 to point 2 is 2.22e-16 long", "coincide but for rounding"]),
         Case("NaN coordinate (Python; JSON has no NaN)", None, ["point 0"],
              lambda tquad, p: tquad.mesh_boundary([(float("nan"), 0.0)] + GOOD_POINTS[1:], GOOD_CORNERS)),
         Case("huge --t5-cut-edges", lambda d: Prepared(_boundary(d, "loop.json", GOOD_POINTS, GOOD_CORNERS),
