@@ -79,6 +79,24 @@ TEST_F(DamagedCad, TheReadersCrashLeavesNoCoreDump) {
   }
 }
 
+TEST_F(DamagedCad, AStepFaceThatDoesNotReadIsNotLeftOutOfTheMesh) {
+  // OpenCASCADE transfers a shell without a face that does not read (its type name
+  // damaged) or does not transfer (its surface a reference to a face bound): the
+  // plate then came out as 3 faces of 4 with exit 0.
+  const std::string renamed = path("renamed_face.step");
+  write_text(renamed, edited_example("plate_with_hole.step", "#114 = ADVANCED_FACE(", "#114 = ADVANCE2_FACE("));
+  expect_damaged(renamed, {}, {renamed, "is damaged: shell #16 lost its face 2 of 4 (not a face entity)",
+                               "the shape would be meshed without it"});
+  const std::string misreferenced = path("misreferenced_face.step");
+  write_text(misreferenced, edited_example("plate_with_hole.step", "#114 = ADVANCED_FACE('',(#115),#60,.T.)",
+                                           "#114 = ADVANCED_FACE('',(#115),#115,.T.)"));
+  expect_damaged(misreferenced, {}, {misreferenced, "is damaged: shell #16 lost its face #114"});
+  // The shipped plate itself has all four.
+  const RunResult whole = run_tquad({"mesh", kShapes + "/plate_with_hole.step", "-o", path("plate.vtu")});
+  EXPECT_EQ(whole.exit_status, 0) << whole.err;
+  EXPECT_NE(whole.out.find("faces 4 meshed"), std::string::npos) << whole.out;
+}
+
 TEST_F(DamagedCad, ABrepCurveCountOfTensOfThousandsIsRefusedAtTheFirstFailedRead) {
   // An edge's count of curve representations 1 -> 99999: OpenCASCADE's BREP reader
   // used to read on from a failed stream until the deadline killed the child; the
