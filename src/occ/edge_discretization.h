@@ -20,13 +20,21 @@ struct EdgeNodes {
   std::vector<NodeId> nodes;   // node ids along the edge's FORWARD orientation
 };
 
+// An axis-aligned box: the shape's faces' bounding box (BRepBndLib, from their
+// surfaces), which every edge of a face lies in.
+struct ShapeBox {
+  Vec3 low, high;
+  double diagonal() const { return norm(high - low); }
+};
+
+// Edges whose 3D curve OpenCASCADE cannot evaluate (none, a failure, a non-finite
+// point, tangent or length), or whose curve strays far out of `box` (a damaged
+// curve: a faraway B-spline pole), each with the reason; a damaged file's edges.
+// Degenerate edges are not listed.
+std::map<int, std::string> unusable_edges(const ShapeIndex& index, const ShapeBox& box);
+
 // Per edge, one segment per 45 degrees of its curve's turning, at least 1 (0 for a
 // degenerate edge): the fewest segments that stand for its shape.
-// Edges whose 3D curve OpenCASCADE cannot evaluate (none, a failure, a non-finite
-// point, tangent or length), each with the reason; a damaged file's edges. Degenerate
-// edges are not listed.
-std::map<int, std::string> unusable_edges(const ShapeIndex& index);
-
 // `usable`: per edge, or empty for all; the others get 0.
 std::vector<int> edge_turn_minimums(const ShapeIndex& index, const std::vector<char>& usable = {});
 

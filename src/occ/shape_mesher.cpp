@@ -37,20 +37,23 @@ namespace {
 // mm is a million km): the sizes and counts derived from them would be meaningless.
 constexpr double kMaxShapeExtent = 1e12;
 
-// The shape's bounding-box diagonal; throws InputError when it is absurd.
-double shape_diagonal(const TopoDS_Shape& shape) {
+// The shape's bounding box (its faces' surfaces); throws InputError when it is
+// absurd. A shape without any (no face, no edge) gets a box 25 across, so that the
+// default size is 1.
+ShapeBox checked_shape_box(const TopoDS_Shape& shape) {
   Bnd_Box box;
   BRepBndLib::Add(shape, box);
-  if (box.IsVoid()) return 25.0;
+  if (box.IsVoid()) return {{0, 0, 0}, {25.0, 0, 0}};
   double x0, y0, z0, x1, y1, z1;
   box.Get(x0, y0, z0, x1, y1, z1);
-  const double diagonal = std::sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0) + (z1 - z0) * (z1 - z0));
+  const ShapeBox result{{x0, y0, z0}, {x1, y1, z1}};
+  const double diagonal = result.diagonal();
   if (!(diagonal <= kMaxShapeExtent)) {
     char text[64];
     std::snprintf(text, sizeof text, "%.3g", diagonal);
     throw InputError(std::string("the shape is ") + text + " units across: its coordinates are absurd (a damaged file?)");
   }
-  return diagonal;
+  return result;
 }
 
 // An area estimate may undercount (edges refined for curvature or small faces give
@@ -216,7 +219,8 @@ class ShapeMeshContext {
   // Stage "index": faces to mesh, the target size, and the edges they need.
   void index_faces() {
     meshed_ = meshed_faces(index_, options_.faces);
-    const double diagonal = shape_diagonal(shape_);  // checked even when the size is given
+    const ShapeBox box = checked_shape_box(shape_);  // checked even when the size is given
+    const double diagonal = box.diagonal();
     if (options_.size > 0 && options_.min_size > options_.size) {
       char text[96];
       std::snprintf(text, sizeof text, "the minimum element size (%g) is larger than the element size (%g)",
@@ -228,7 +232,7 @@ class ShapeMeshContext {
     // are refused before anything else looks at them; the rest is meshed without them.
     damaged_ = options_.damaged_faces;
     std::vector<char> usable(index_.edge_count(), 1);
-    for (const auto& [e, why] : unusable_edges(index_)) {
+    for (const auto& [e, why] : unusable_edges(index_, box)) {
       usable[e] = 0;
       for (int f : index_.faces_of_edge(e)) {
         if (!damaged_.count(f)) damaged_[f] = "its edge " + std::to_string(e) + " " + why + " (a damaged file?)";

@@ -6,6 +6,14 @@
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRep_Builder.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <BRep_Tool.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Compound.hxx>
@@ -14,6 +22,7 @@
 #include <algorithm>
 #include <string>
 
+#include "occ/edge_discretization.h"
 #include "occ/shape_index.h"
 #include "occ/shape_mesher.h"
 
@@ -70,6 +79,49 @@ TEST(FaceRefusals, WithoutKeepGoingTheErrorCarriesTheRecords) {
     EXPECT_NE(message.find("1 face(s) refused"), std::string::npos) << message;
     EXPECT_EQ(message.find("--keep-going"), std::string::npos) << "each front end words its own advice: " << message;
   }
+}
+
+// A 10 mm box whose first edge's 3D curve is a parabola through the same ends with
+// its middle pole 1e5 away, as a damaged file's B-spline pole; its two faces'
+// surfaces are as before.
+TopoDS_Shape box_with_a_stray_edge(int& stray) {
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(10.0, 10.0, 10.0).Shape();
+  const ShapeIndex index(box);
+  stray = 0;
+  const TopoDS_Edge edge = TopoDS::Edge(index.edge(stray));
+  TopoDS_Vertex first, last;
+  TopExp::Vertices(edge, first, last, true);
+  const gp_Pnt a = BRep_Tool::Pnt(first), b = BRep_Tool::Pnt(last);
+  TColgp_Array1OfPnt poles(1, 3);
+  poles(1) = a;
+  poles(2) = gp_Pnt(0.5 * (a.X() + b.X()) + 1e5, 0.5 * (a.Y() + b.Y()) + 1e5, 0.5 * (a.Z() + b.Z()));
+  poles(3) = b;
+  TColStd_Array1OfReal knots(1, 2);
+  knots(1) = 0;
+  knots(2) = 1;
+  TColStd_Array1OfInteger multiplicities(1, 2);
+  multiplicities(1) = multiplicities(2) = 3;
+  BRep_Builder builder;
+  builder.UpdateEdge(edge, new Geom_BSplineCurve(poles, knots, multiplicities, 2), 1e-7);
+  builder.Range(edge, 0.0, 1.0, true);
+  return box;
+}
+
+TEST(FaceRefusals, AnEdgeStrayingFarOutOfTheFacesBoxIsUnusable) {
+  // A random edit of an IGES file moved a B-spline edge's pole 400 km out of a shape
+  // 2.6 m across; its arc-length spacing took 80 s to fail, and the job failed with
+  // it. Its B-spline faces' box (BRepBndLib takes their surfaces) did not hold it;
+  // a planar face's box takes its edges, so here the faces' box is given: the box
+  // the 10 mm cube's faces span.
+  const ShapeBox faces_box{{0, 0, 0}, {10, 10, 10}};
+  const ShapeIndex whole(BRepPrimAPI_MakeBox(10.0, 10.0, 10.0).Shape());
+  EXPECT_TRUE(unusable_edges(whole, faces_box).empty());
+  int stray = 0;
+  const ShapeIndex index(box_with_a_stray_edge(stray));
+  const auto unusable = unusable_edges(index, faces_box);
+  ASSERT_EQ(unusable.size(), 1u);
+  EXPECT_EQ(unusable.begin()->first, stray);
+  EXPECT_EQ(unusable.begin()->second, "strays 7.07e+04 out of the faces' bounding box, which is 17.3 across");
 }
 
 TEST(FaceRefusals, EveryCodeHasItsOwnName) {
