@@ -35,6 +35,8 @@
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <map>
 #include <set>
 
@@ -436,6 +438,34 @@ TEST(ShapeMeshing, IgesInput) {
   fs::remove(path);
   EXPECT_EQ(r.faces, 9);
   EXPECT_EQ(r.refused, 0);
+}
+
+TEST(ShapeMeshing, AnIgesShellThatLostAFaceIsRefused) {
+  // The bracket as IGES with its first direction entity's type 123 made 193 (a
+  // random edit did that): the face whose plane it orients does not transfer, and
+  // OpenCASCADE's shell came through with 8 faces of 9, meshed with exit 0 before.
+  const TopoDS_Shape bracket = read_shape(std::string(TQUAD_SOURCE_DIR) + "/resources/shapes/filleted_bracket.brep");
+  const std::string path = (fs::temp_directory_path() / "bracket_lost_face.igs").string();
+  IGESControl_Controller::Init();
+  IGESControl_Writer writer("MM", 1);
+  ASSERT_TRUE(writer.AddShape(bracket));
+  writer.ComputeModel();
+  std::ostringstream text;
+  ASSERT_TRUE(writer.Write(text));
+  std::string iges = text.str();
+  const std::size_t direction = iges.find("\n123,");
+  ASSERT_NE(direction, std::string::npos) << "no direction entity in the parameter section";
+  iges.replace(direction + 1, 3, "193");
+  std::ofstream(path) << iges;
+  try {
+    read_shape(path);
+    ADD_FAILURE() << "read with a face lost";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is damaged: the shell at directory entry 5 lost its face 1 of 9"),
+              std::string::npos)
+        << e.what();
+  }
+  fs::remove(path);
 }
 
 TEST(ShapeMeshing, ExampleShapes) { check_folder(fs::path(TQUAD_SOURCE_DIR) / "resources" / "shapes"); }
