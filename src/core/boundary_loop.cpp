@@ -6,6 +6,7 @@
 #include <string>
 #include <tuple>
 
+#include "core/box3.h"
 #include "core/input_error.h"
 #include "core/planar_self_intersection.h"
 
@@ -90,12 +91,7 @@ void check_points(const BoundaryLoop& loop) {
                        " coincide: the boundary touches itself");
     }
   }
-  Vec3 low = loop.points[0], high = loop.points[0];
-  for (const Vec3& p : loop.points) {
-    low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
-    high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
-  }
-  const double shortest_allowed = kShortestSegmentFraction * norm(high - low);
+  const double shortest_allowed = kShortestSegmentFraction * bounding_box(loop.points).diagonal();
   for (int i = 0; i < n; ++i) {
     const int j = (i + 1) % n;
     if (loop.points[i] == loop.points[j]) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/box3.h"
 #include "core/input_error.h"
 #include "core/planar_predicates.h"
 
@@ -24,14 +25,10 @@ Vec3 newell_normal(const std::vector<Vec3>& p) {
 
 bool planar_normal(const std::vector<Vec3>& p, Vec3& unit_normal) {
   const Vec3 n = newell_normal(p);
-  Vec3 lo = p[0], hi = p[0], centroid;
-  for (const Vec3& q : p) {
-    lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)};
-    hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
-    centroid += q;
-  }
+  Vec3 centroid;
+  for (const Vec3& q : p) centroid += q;
   centroid = (1.0 / static_cast<double>(p.size())) * centroid;
-  const double size = norm(hi - lo);
+  const double size = bounding_box(p).diagonal();
   const double area2 = norm(n);
   if (area2 <= 1e-14 * size * size) return false;
   unit_normal = (1.0 / area2) * n;
@@ -54,16 +51,11 @@ using Point2 = Vec3;  // projected on the loop's plane, z = 0
 
 // Projects the loop on its plane; returns false when the loop is not planar.
 bool project_if_planar(const std::vector<Vec3>& p, std::vector<Point2>& out) {
-  Vec3 lo = p[0], hi = p[0];
-  for (const Vec3& q : p) {
-    lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)};
-    hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
-  }
+  const Vec3 extent = bounding_box(p).extent();
   Vec3 normal;
-  if (norm(newell_normal(p)) <= 1e-14 * dot(hi - lo, hi - lo)) {
+  if (norm(newell_normal(p)) <= 1e-14 * dot(extent, extent)) {
     // No net area (a bow-tie, or a loop on a line): look for the crossing in the
     // coordinate plane where the loop spreads most; report it if there is one.
-    const Vec3 extent = hi - lo;
     normal = extent.x <= extent.y && extent.x <= extent.z ? Vec3{1, 0, 0}
              : extent.y <= extent.z                      ? Vec3{0, 1, 0}
                                                          : Vec3{0, 0, 1};

@@ -1,13 +1,10 @@
 #include "io/text_output.h"
 
 #include <charconv>
-#include <cmath>
-#include <stdexcept>
 
 namespace tquad {
 
 void append_double(std::string& text, double value) {
-  if (!std::isfinite(value)) throw std::logic_error("mesh has a non-finite node coordinate");
   char buffer[32];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
   text.append(buffer, result.ptr);

@@ -9,8 +9,9 @@
 namespace tquad {
 
 // Appends the shortest round-trip text of `value` (std::to_chars without a precision,
-// e.g. "0.1", "1e-07", "-0", "3"). Throws std::logic_error for NaN or infinity (no
-// mesh file format here can express them; the mesher never makes one).
+// e.g. "0.1", "1e-07", "-0", "3"). The writers call it on a ShapeMesh that passed
+// check_shape_mesh, which refuses NaN and infinite coordinates (no mesh file format
+// here can express them).
 void append_double(std::string& text, double value);
 
 // Writes `text` to `out` and clears it once it holds more than about 1 MiB.

@@ -49,14 +49,14 @@ double tangent_turn(const BRepAdaptor_Curve& curve) {
 
 // An edge point this many times the box's diagonal out of the box is off every face
 // the edge bounds: a damaged curve. A random edit of an IGES file moved one pole of a
-// B-spline edge of tank.brep's shape 400 km out of a box 2.6 m across; its
-// arc-length spacing then took 80 s to fail.
+// B-spline edge of tank.brep's shape 400 km out of a box 2.6 m across; the command
+// then worked 84 s before its arc-length spacing failed the whole job.
 constexpr double kStrayOverDiagonal = 1.0;
 constexpr int kStraySamples = 64;
 
 // How far (the largest distance over kStraySamples + 1 points) the curve goes out of
 // the box; 0 inside it.
-double distance_out_of(const BRepAdaptor_Curve& curve, const ShapeBox& box) {
+double distance_out_of(const BRepAdaptor_Curve& curve, const Box3& box) {
   const double t0 = curve.FirstParameter(), t1 = curve.LastParameter();
   double farthest = 0;
   for (int i = 0; i <= kStraySamples; ++i) {
@@ -71,7 +71,7 @@ double distance_out_of(const BRepAdaptor_Curve& curve, const ShapeBox& box) {
 
 }  // namespace
 
-std::map<int, std::string> unusable_edges(const ShapeIndex& index, const ShapeBox& box) {
+std::map<int, std::string> unusable_edges(const ShapeIndex& index, const Box3& box) {
   std::map<int, std::string> bad;
   for (int e = 0; e < index.edge_count(); ++e) {
     const TopoDS_Edge edge = forward(index.edge(e));
@@ -105,7 +105,7 @@ std::map<int, std::string> unusable_edges(const ShapeIndex& index, const ShapeBo
       const double out = distance_out_of(curve, box);
       if (out > kStrayOverDiagonal * box.diagonal()) {
         char text[160];
-        std::snprintf(text, sizeof text, "strays %.3g out of the faces' bounding box, which is %.3g across", out,
+        std::snprintf(text, sizeof text, "strays %.3g out of the shape's bounding box, which is %.3g across", out,
                       box.diagonal());
         bad[e] = text;
       }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/box3.h"
 #include "core/quad_mesh.h"
 #include "occ/cusp_ends.h"
 #include "occ/shape_index.h"
@@ -20,18 +21,12 @@ struct EdgeNodes {
   std::vector<NodeId> nodes;   // node ids along the edge's FORWARD orientation
 };
 
-// An axis-aligned box: the shape's faces' bounding box (BRepBndLib, from their
-// surfaces), which every edge of a face lies in.
-struct ShapeBox {
-  Vec3 low, high;
-  double diagonal() const { return norm(high - low); }
-};
-
 // Edges whose 3D curve OpenCASCADE cannot evaluate (none, a failure, a non-finite
-// point, tangent or length), or whose curve strays far out of `box` (a damaged
-// curve: a faraway B-spline pole), each with the reason; a damaged file's edges.
-// Degenerate edges are not listed.
-std::map<int, std::string> unusable_edges(const ShapeIndex& index, const ShapeBox& box);
+// point, tangent or length), or whose curve strays far out of `box`, the shape's
+// bounding box (BRepBndLib: a B-spline face's box comes from its surface, not its
+// edges, so a damaged edge curve with a faraway pole can lie far out of it), each
+// with the reason; a damaged file's edges. Degenerate edges are not listed.
+std::map<int, std::string> unusable_edges(const ShapeIndex& index, const Box3& box);
 
 // Per edge, one segment per 45 degrees of its curve's turning, at least 1 (0 for a
 // degenerate edge): the fewest segments that stand for its shape.

@@ -37,16 +37,15 @@ namespace {
 // mm is a million km): the sizes and counts derived from them would be meaningless.
 constexpr double kMaxShapeExtent = 1e12;
 
-// The shape's bounding box (its faces' surfaces); throws InputError when it is
-// absurd. A shape without any (no face, no edge) gets a box 25 across, so that the
-// default size is 1.
-ShapeBox checked_shape_box(const TopoDS_Shape& shape) {
+// The shape's bounding box (BRepBndLib); throws InputError when it is absurd. A shape
+// without any (no face, no edge) gets a box 25 across, so that the default size is 1.
+Box3 checked_shape_box(const TopoDS_Shape& shape) {
   Bnd_Box box;
   BRepBndLib::Add(shape, box);
   if (box.IsVoid()) return {{0, 0, 0}, {25.0, 0, 0}};
   double x0, y0, z0, x1, y1, z1;
   box.Get(x0, y0, z0, x1, y1, z1);
-  const ShapeBox result{{x0, y0, z0}, {x1, y1, z1}};
+  const Box3 result{{x0, y0, z0}, {x1, y1, z1}};
   const double diagonal = result.diagonal();
   if (!(diagonal <= kMaxShapeExtent)) {
     char text[64];
@@ -219,7 +218,7 @@ class ShapeMeshContext {
   // Stage "index": faces to mesh, the target size, and the edges they need.
   void index_faces() {
     meshed_ = meshed_faces(index_, options_.faces);
-    const ShapeBox box = checked_shape_box(shape_);  // checked even when the size is given
+    const Box3 box = checked_shape_box(shape_);  // checked even when the size is given
     const double diagonal = box.diagonal();
     if (options_.size > 0 && options_.min_size > options_.size) {
       char text[96];

@@ -448,6 +448,7 @@ TEST(WriterChecksMessages, SayWhichRecord) {
 }
 
 TEST(WriterChecksMessages, NonFiniteCoordinatesAreRefused) {
+  // By check_shape_mesh, which every writer runs first (std::invalid_argument).
   ShapeMesh mesh = two_face_mesh();
   mesh.nodes[4].y = std::numeric_limits<double>::infinity();
   std::ostringstream out;

@@ -109,11 +109,11 @@ TopoDS_Shape box_with_a_stray_edge(int& stray) {
 
 TEST(FaceRefusals, AnEdgeStrayingFarOutOfTheFacesBoxIsUnusable) {
   // A random edit of an IGES file moved a B-spline edge's pole 400 km out of a shape
-  // 2.6 m across; its arc-length spacing took 80 s to fail, and the job failed with
-  // it. Its B-spline faces' box (BRepBndLib takes their surfaces) did not hold it;
+  // 2.6 m across; the command worked 84 s before its arc-length spacing failed the
+  // whole job. Its B-spline faces' box (BRepBndLib takes their surfaces) did not hold it;
   // a planar face's box takes its edges, so here the faces' box is given: the box
   // the 10 mm cube's faces span.
-  const ShapeBox faces_box{{0, 0, 0}, {10, 10, 10}};
+  const Box3 faces_box{{0, 0, 0}, {10, 10, 10}};
   const ShapeIndex whole(BRepPrimAPI_MakeBox(10.0, 10.0, 10.0).Shape());
   EXPECT_TRUE(unusable_edges(whole, faces_box).empty());
   int stray = 0;
@@ -121,7 +121,7 @@ TEST(FaceRefusals, AnEdgeStrayingFarOutOfTheFacesBoxIsUnusable) {
   const auto unusable = unusable_edges(index, faces_box);
   ASSERT_EQ(unusable.size(), 1u);
   EXPECT_EQ(unusable.begin()->first, stray);
-  EXPECT_EQ(unusable.begin()->second, "strays 7.07e+04 out of the faces' bounding box, which is 17.3 across");
+  EXPECT_EQ(unusable.begin()->second, "strays 7.07e+04 out of the shape's bounding box, which is 17.3 across");
 }
 
 TEST(FaceRefusals, EveryCodeHasItsOwnName) {
