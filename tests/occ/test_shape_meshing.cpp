@@ -23,6 +23,9 @@
 #include <BRepTools.hxx>
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Writer.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <STEPControl_Writer.hxx>
+#include <TopExp_Explorer.hxx>
 #include <BRepBndLib.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -462,6 +465,53 @@ TEST(ShapeMeshing, AnIgesShellThatLostAFaceIsRefused) {
     ADD_FAILURE() << "read with a face lost";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("is damaged: the shell at directory entry 5 lost its face 1 of 9"),
+              std::string::npos)
+        << e.what();
+  }
+  fs::remove(path);
+}
+
+int count_faces(const TopoDS_Shape& shape) {
+  int faces = 0;
+  for (TopExp_Explorer face(shape, TopAbs_FACE); face.More(); face.Next()) ++faces;
+  return faces;
+}
+
+// Two boxes side by side written as one STEP file, returned as its text.
+std::string two_boxes_as_step() {
+  TopoDS_Compound boxes;
+  BRep_Builder builder;
+  builder.MakeCompound(boxes);
+  builder.Add(boxes, BRepPrimAPI_MakeBox(10.0, 10.0, 10.0).Shape());
+  builder.Add(boxes, BRepPrimAPI_MakeBox(gp_Pnt(20.0, 0.0, 0.0), 10.0, 10.0, 10.0).Shape());
+  STEPControl_Writer writer;
+  EXPECT_EQ(writer.Transfer(boxes, STEPControl_AsIs), IFSelect_RetDone);
+  const std::string path = (fs::temp_directory_path() / "two_boxes_written.step").string();
+  EXPECT_EQ(writer.Write(path.c_str()), IFSelect_RetDone);
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  fs::remove(path);
+  return text.str();
+}
+
+TEST(ShapeMeshing, AStepBodyWhoseShellDoesNotReadIsRefused) {
+  // The first CLOSED_SHELL's type name damaged: its MANIFOLD_SOLID_BREP no longer
+  // reads, OpenCASCADE transfers the other box alone, and the file was meshed as
+  // one box of two with exit 0 (found so on a five-body part).
+  std::string step = two_boxes_as_step();
+  const std::string path = (fs::temp_directory_path() / "two_boxes_one_shell_damaged.step").string();
+  std::ofstream(path) << step;
+  EXPECT_EQ(count_faces(read_shape(path)), 12) << "the undamaged file holds both boxes";
+  const std::size_t shell = step.find("CLOSED_SHELL(");
+  ASSERT_NE(shell, std::string::npos);
+  step.replace(shell, 12, "CLOSED_SHELX");
+  std::ofstream(path) << step;
+  try {
+    read_shape(path);
+    ADD_FAILURE() << "read with a body lost";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("(MANIFOLD_SOLID_BREP) did not read (Parameter n0.2 (outer)"),
               std::string::npos)
         << e.what();
   }
