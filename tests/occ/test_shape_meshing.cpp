@@ -477,6 +477,36 @@ int count_faces(const TopoDS_Shape& shape) {
   return faces;
 }
 
+TEST(ShapeMeshing, AnIgesFaceThatDoesNotReadWholeIsRefused) {
+  // The bracket as IGES with its first face's outer-loop flag 1 made 7: the face's
+  // entity does not read whole. Random edits did that to a face of tank.brep written
+  // as IGES, which came back with 53 faces of 52 and exit 0.
+  const TopoDS_Shape bracket = read_shape(std::string(TQUAD_SOURCE_DIR) + "/resources/shapes/filleted_bracket.brep");
+  const std::string path = (fs::temp_directory_path() / "bracket_bad_face_flag.igs").string();
+  IGESControl_Controller::Init();
+  IGESControl_Writer writer("MM", 1);
+  ASSERT_TRUE(writer.AddShape(bracket));
+  writer.ComputeModel();
+  std::ostringstream text;
+  ASSERT_TRUE(writer.Write(text));
+  std::string iges = text.str();
+  const std::size_t face = iges.find("\n510,");
+  ASSERT_NE(face, std::string::npos) << "no face entity in the parameter section";
+  const std::size_t flag = iges.find(",1,1,", face);
+  ASSERT_EQ(iges.find(';', face) > flag, true) << "the first face's parameters are not surface, 1 loop, flag 1";
+  iges.replace(flag, 5, ",1,7,");
+  std::ofstream(path) << iges;
+  try {
+    read_shape(path);
+    ADD_FAILURE() << "read with a face that did not read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("(type 510) did not read (Parameter Data : parameter 3 (Outer Loop flag)"),
+              std::string::npos)
+        << e.what();
+  }
+  fs::remove(path);
+}
+
 // Two boxes side by side written as one STEP file, returned as its text.
 std::string two_boxes_as_step() {
   TopoDS_Compound boxes;
