@@ -281,6 +281,37 @@ TEST_F(Success, GivenCornersThatLeaveAnInvertedQuadGiveWayAndTheReportSaysSo) {
   EXPECT_NE(text.out.find("the given corners left an inverted quad"), std::string::npos) << text.out;
 }
 
+TEST_F(Success, DegenerateAndCollapsedQuadsAreWarnedOf) {
+  // A 40-point unit circle with one point 1.2e8 above it (a fuzzed loop): every quad
+  // of its mesh has a scaled Jacobian of 0. It is written, as inverted quads of a
+  // boundary file are, and the command says so; a sound loop gets no such warning.
+  std::vector<Vec3> circle;
+  for (int i = 0; i < 40; ++i) {
+    const double angle = 2 * std::acos(-1.0) * i / 40;
+    circle.push_back({std::cos(angle), std::sin(angle), 0.0});
+  }
+  const std::string sound = boundary_file("circle.json", circle, {0, 10, 20, 30});
+  const RunResult good = run_tquad({"mesh", sound, "-o", path("circle.vtu")});
+  ASSERT_EQ(good.exit_status, 0) << good.err;
+  EXPECT_EQ(good.err.find("warning"), std::string::npos) << good.err;
+  circle[7].z = 1.2e8;
+  const std::string spiked = boundary_file("spiked.json", circle, {0, 10, 20, 30});
+  const RunResult r = run_tquad({"mesh", spiked, "-o", path("spiked.vtu"), "--report", "json"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json report = json::parse(r.out);
+  const long long degenerate = report["quality"]["degenerate"].get<long long>();
+  const long long collapsed = report["quality"]["collapsed"].get<long long>();
+  ASSERT_GT(degenerate, 0);
+  ASSERT_GT(collapsed, 0);
+  const std::string quads = std::to_string(report["quads"].get<long long>());
+  EXPECT_NE(r.err.find("warning: " + std::to_string(degenerate) + " of " + quads + " quads are degenerate"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("warning: " + std::to_string(collapsed) + " of " + quads + " quads are collapsed"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST_F(Success, ShippedExampleBoundariesMesh) {
   int examples = 0;
   for (const auto& entry : std::filesystem::directory_iterator(TQUAD_EXAMPLES_DIR)) {
