@@ -12,13 +12,17 @@
 
 namespace tquad {
 
+// `explain_empty(reader)`, when given, runs before a file that transfers nothing is
+// refused as such, to throw a more precise InputError (an entity that did not read).
 template <typename Reader>
-TopoDS_Shape read_with(Reader& reader, const std::string& path, const char* format) {
+TopoDS_Shape read_with(Reader& reader, const std::string& path, const char* format,
+                       void (*explain_empty)(Reader&, const std::string&) = nullptr) {
   try {
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
       throw InputError("cannot read '" + path + "' as " + format);
     }
     if (reader.TransferRoots() == 0) {
+      if (explain_empty) explain_empty(reader, path);
       throw InputError("'" + path + "' holds no shape OpenCASCADE can transfer");
     }
     return reader.OneShape();

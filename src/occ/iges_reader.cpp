@@ -83,7 +83,7 @@ void refuse_unread_face_entities(IGESControl_Reader& reader, const std::string& 
 
 TopoDS_Shape read_iges_file(const std::string& path) {
   IGESControl_Reader reader;
-  const TopoDS_Shape shape = read_with(reader, path, "IGES");
+  const TopoDS_Shape shape = read_with(reader, path, "IGES", &refuse_unread_face_entities);
   refuse_lost_faces(reader, path);
   refuse_unread_face_entities(reader, path);
   return shape;

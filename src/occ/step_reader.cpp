@@ -109,7 +109,8 @@ void refuse_unread_shape_entities(STEPControl_Reader& reader, const std::string&
 
 TopoDS_Shape read_step_file(const std::string& path) {
   STEPControl_Reader reader;
-  const TopoDS_Shape shape = read_with(reader, path, "STEP");
+  // A file whose one body did not read transfers nothing: name the entity then too.
+  const TopoDS_Shape shape = read_with(reader, path, "STEP", &refuse_unread_shape_entities);
   refuse_lost_faces(reader, path);
   refuse_unread_shape_entities(reader, path);
   return shape;

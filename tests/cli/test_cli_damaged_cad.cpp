@@ -97,6 +97,14 @@ TEST_F(DamagedCad, AStepFaceThatDoesNotReadIsNotLeftOutOfTheMesh) {
   EXPECT_NE(whole.out.find("faces 4 meshed"), std::string::npos) << whole.out;
 }
 
+TEST_F(DamagedCad, AStepFileWhoseOnlyShellDoesNotReadNamesTheEntity) {
+  // The plate's shell's type name damaged: its surface model does not read, nothing
+  // transfers, and the message names the entity instead of saying only that.
+  const std::string file = path("no_shell.step");
+  write_text(file, edited_example("plate_with_hole.step", "#16 = OPEN_SHELL(", "#16 = OPEN_SHELX("));
+  expect_damaged(file, {}, {file, "is damaged: entity #15 (SHELL_BASED_SURFACE_MODEL) did not read"});
+}
+
 TEST_F(DamagedCad, ABrepCurveCountOfTensOfThousandsIsRefusedAtTheFirstFailedRead) {
   // An edge's count of curve representations 1 -> 99999: OpenCASCADE's BREP reader
   // used to read on from a failed stream until the deadline killed the child; the
