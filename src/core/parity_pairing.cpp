@@ -45,36 +45,52 @@ int make_nodes_even(std::vector<char> odd, const std::vector<ParityUnit>& units,
     for (int c : units[u].curves) sum += goal[c];
     return sum;
   };
+  const auto best_own_unit = [&](int n) {
+    int best = own_units[n][0];
+    for (int u : own_units[n]) if (summed_goal(u) > summed_goal(best)) best = u;
+    return best;
+  };
   for (int start = 0; start < nodes; ++start) {
     if (!odd[start]) continue;
-    // Breadth-first search for the nearest other odd node.
+    // Breadth-first search for the nearest node `wanted` accepts; its path back.
     std::vector<std::pair<int, int>> came_from(nodes, {-1, -1});  // (previous node, unit)
-    std::vector<char> seen(nodes, 0);
-    std::deque<int> queue{start};
-    seen[start] = 1;
-    int found = -1;
-    while (!queue.empty() && found < 0) {
-      const int n = queue.front();
-      queue.pop_front();
-      for (const auto& [m, u] : neighbours[n]) {
-        if (seen[m]) continue;
-        seen[m] = 1;
-        came_from[m] = {n, u};
-        if (odd[m]) { found = m; break; }
-        queue.push_back(m);
+    const auto nearest = [&](const auto& wanted) {
+      std::vector<char> seen(nodes, 0);
+      std::deque<int> queue{start};
+      seen[start] = 1;
+      while (!queue.empty()) {
+        const int n = queue.front();
+        queue.pop_front();
+        for (const auto& [m, u] : neighbours[n]) {
+          if (seen[m]) continue;
+          seen[m] = 1;
+          came_from[m] = {n, u};
+          if (wanted(m)) return m;
+          queue.push_back(m);
+        }
       }
-    }
-    if (found >= 0) {
-      for (int n = found; n != start; n = came_from[n].first) change_unit(units[came_from[n].second], goal, minimum, count);
-      odd[start] = odd[found] = 0;
+      return -1;
+    };
+    const auto change_path_to = [&](int end) {
+      for (int n = end; n != start; n = came_from[n].first) change_unit(units[came_from[n].second], goal, minimum, count);
+    };
+    if (const int partner = nearest([&](int m) { return odd[m] != 0; }); partner >= 0) {
+      change_path_to(partner);
+      odd[partner] = 0;
     } else if (!own_units[start].empty()) {
-      int best = own_units[start][0];
-      for (int u : own_units[start]) if (summed_goal(u) > summed_goal(best)) best = u;
-      change_unit(units[best], goal, minimum, count);
-      odd[start] = 0;
+      change_unit(units[best_own_unit(start)], goal, minimum, count);
+    } else if (const int exit = nearest([&](int m) { return !own_units[m].empty(); }); exit >= 0) {
+      // No odd partner and no unit of its own: the path to the nearest node with a
+      // unit of its own, and that unit (the nodes on the way flip twice). Faces left
+      // out of a shape (refused, or not in --faces) give their neighbours such units:
+      // 918_pump_carter_sup_21_03_2006.stp without faces 98 to 100 had one odd face
+      // among meshed neighbours only, and was refused as impossible to make even.
+      change_path_to(exit);
+      change_unit(units[best_own_unit(exit)], goal, minimum, count);
     } else {
       return start;
     }
+    odd[start] = 0;
   }
   return -1;
 }

@@ -7,7 +7,8 @@
 // paths of the graph whose edges are the units flipping exactly two nodes, and every
 // unit on a path changes (the nodes inside a path flip twice and stay even). A node
 // left without a partner changes a unit that flips it alone, the one with the largest
-// summed goal (it changes least, relatively).
+// summed goal (it changes least, relatively); if it has none, the path to the nearest
+// node that has one and that unit change.
 #pragma once
 
 #include <vector>

@@ -69,6 +69,33 @@ double distance_out_of(const BRepAdaptor_Curve& curve, const Box3& box) {
   return farthest;
 }
 
+// A vertex whose tolerance is this fraction of the box's diagonal joins edges that do
+// not meet: OpenCASCADE's healing widened it to bridge the gap, and the mesh would
+// pull the edges to the vertex's point across it. Random edits of the parts' STEP
+// files (a point's coordinate changed) gave tolerances of 2% to 100% of the diagonal
+// (999,990 on cube_filet.stp); the 16 parts themselves stay under 0.07%
+// (SampleCrankshaft4A.stp: 0.22 on 341).
+constexpr double kGapOverDiagonal = 0.01;
+
+// Why the edge's vertices make it unusable, or "" when they do not.
+std::string wide_vertex(const TopoDS_Edge& edge, double diagonal) {
+  TopoDS_Vertex first, last;
+  TopExp::Vertices(edge, first, last);
+  for (const TopoDS_Vertex& v : {first, last}) {
+    if (v.IsNull()) continue;
+    const double tolerance = BRep_Tool::Tolerance(v);
+    if (!(tolerance > kGapOverDiagonal * diagonal)) continue;
+    const gp_Pnt p = BRep_Tool::Pnt(v);
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "ends at the vertex at (%.6g, %.6g, %.6g), whose tolerance %.3g is over 1%% of the shape's %.3g "
+                  "across: the edges there do not meet",
+                  p.X(), p.Y(), p.Z(), tolerance, diagonal);
+    return text;
+  }
+  return "";
+}
+
 }  // namespace
 
 std::map<int, std::string> unusable_edges(const ShapeIndex& index, const Box3& box) {
@@ -100,6 +127,10 @@ std::map<int, std::string> unusable_edges(const ShapeIndex& index, const Box3& b
       const double length = GCPnts_AbscissaPoint::Length(curve);
       if (!std::isfinite(length)) {
         bad[e] = "has no finite length";
+        continue;
+      }
+      if (const std::string gap = wide_vertex(edge, box.diagonal()); !gap.empty()) {
+        bad[e] = gap;
         continue;
       }
       const double out = distance_out_of(curve, box);

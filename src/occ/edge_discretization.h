@@ -22,10 +22,11 @@ struct EdgeNodes {
 };
 
 // Edges whose 3D curve OpenCASCADE cannot evaluate (none, a failure, a non-finite
-// point, tangent or length), or whose curve strays far out of `box`, the shape's
-// bounding box (BRepBndLib: a B-spline face's box comes from its surface, not its
-// edges, so a damaged edge curve with a faraway pole can lie far out of it), each
-// with the reason; a damaged file's edges. Degenerate edges are not listed.
+// point, tangent or length), that end at a vertex whose tolerance is a sizeable part
+// of `box` (a gap the edges do not close), or whose curve strays far out of `box`,
+// the shape's bounding box (BRepBndLib: a B-spline face's box comes from its surface,
+// not its edges, so a damaged edge curve with a faraway pole can lie far out of it),
+// each with the reason; a damaged file's edges. Degenerate edges are not listed.
 std::map<int, std::string> unusable_edges(const ShapeIndex& index, const Box3& box);
 
 // Per edge, one segment per 45 degrees of its curve's turning, at least 1 (0 for a

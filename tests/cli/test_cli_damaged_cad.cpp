@@ -105,6 +105,25 @@ TEST_F(DamagedCad, AStepFileWhoseOnlyShellDoesNotReadNamesTheEntity) {
   expect_damaged(file, {}, {file, "is damaged: entity #15 (SHELL_BASED_SURFACE_MODEL) did not read"});
 }
 
+TEST_F(DamagedCad, AStepLineThatDoesNotParseIsRefusedNamingTheLine) {
+  // A vector's closing ';' made a letter: the parser drops what it cannot read and
+  // OpenCASCADE transfers the rest (a line cut so in a part made it twice as large,
+  // tests/occ/test_shape_meshing.cpp); the file is refused with the line.
+  const std::string file = path("bad_syntax.step");
+  write_text(file, edited_example("plate_with_hole.step", "#50 = VECTOR('',#51,1.);", "#50 = VECTOR('',#51,1.)B"));
+  expect_damaged(file, {}, {file, "is damaged: Undefined Parsing: Line 64: Incorrect syntax"});
+  // A reference to an entity the file does not hold.
+  const std::string dangling = path("unresolved.step");
+  write_text(dangling, edited_example("plate_with_hole.step", "'automotive_design',2000,#2);",
+                                      "'automotive_design',2000,#99999);"));
+  expect_damaged(dangling, {}, {dangling, "is damaged: Unresolved Reference", "#99999"});
+  // A header that does not read changes nothing in the shape: it is meshed.
+  const std::string header = path("bad_header.step");
+  write_text(header, edited_example("plate_with_hole.step", "FILE_NAME('plate_with_hole.step',", "FILE_NAME("));
+  const RunResult r = run_tquad({"mesh", header, "-o", path("header.vtu")});
+  EXPECT_EQ(r.exit_status, 0) << r.err;
+}
+
 TEST_F(DamagedCad, ABrepCurveCountOfTensOfThousandsIsRefusedAtTheFirstFailedRead) {
   // An edge's count of curve representations 1 -> 99999: OpenCASCADE's BREP reader
   // used to read on from a failed stream until the deadline killed the child; the

@@ -20,6 +20,7 @@
 #include <gp_Pnt.hxx>
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include "occ/edge_discretization.h"
@@ -122,6 +123,33 @@ TEST(FaceRefusals, AnEdgeStrayingFarOutOfTheFacesBoxIsUnusable) {
   ASSERT_EQ(unusable.size(), 1u);
   EXPECT_EQ(unusable.begin()->first, stray);
   EXPECT_EQ(unusable.begin()->second, "strays 7.07e+04 out of the shape's bounding box, which is 17.3 across");
+}
+
+TEST(FaceRefusals, AVertexWhoseToleranceBridgesAWideGapMakesItsEdgesUnusable) {
+  // A random edit of a part's STEP file moved a vertex's point 1e6 away; OpenCASCADE's
+  // healing widened the vertex's tolerance to reach its edges, and the part was
+  // meshed with a spike to that point. Here one corner of the 10 mm cube gets a
+  // tolerance of 2 (12% of its 17.3 across): its three edges are unusable; the same
+  // cube with 0.1 (0.6%) keeps them all.
+  const TopoDS_Shape cube = BRepPrimAPI_MakeBox(10.0, 10.0, 10.0).Shape();
+  const ShapeIndex index(cube);
+  const Box3 box{{0, 0, 0}, {10, 10, 10}};
+  TopTools_IndexedMapOfShape vertices;
+  TopExp::MapShapes(cube, TopAbs_VERTEX, vertices);
+  const TopoDS_Vertex corner = TopoDS::Vertex(vertices(1));
+  BRep_Builder builder;
+  builder.UpdateVertex(corner, 0.1);
+  EXPECT_TRUE(unusable_edges(index, box).empty());
+  builder.UpdateVertex(corner, 2.0);
+  const auto unusable = unusable_edges(index, box);
+  ASSERT_EQ(unusable.size(), 3u);
+  const gp_Pnt p = BRep_Tool::Pnt(corner);
+  char at[64];
+  std::snprintf(at, sizeof at, "(%g, %g, %g)", p.X(), p.Y(), p.Z());
+  for (const auto& [edge, why] : unusable) {
+    EXPECT_EQ(why, std::string("ends at the vertex at ") + at +
+                       ", whose tolerance 2 is over 1% of the shape's 17.3 across: the edges there do not meet");
+  }
 }
 
 TEST(FaceRefusals, EveryCodeHasItsOwnName) {

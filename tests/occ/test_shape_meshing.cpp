@@ -507,6 +507,48 @@ TEST(ShapeMeshing, AnIgesFaceThatDoesNotReadWholeIsRefused) {
   fs::remove(path);
 }
 
+TEST(ShapeMeshing, AStepLineCutShortIsRefusedNotMeshedLarger) {
+  // A random edit of 918_pump_carter_sup_21_03_2006.stp cut an oriented edge's line
+  // to "#2815=ORIENTED_6,.F.);": the parser dropped it, the edge loop after it came
+  // one edge short with no failure of its own, and OpenCASCADE's healing made the
+  // face reach past it: all 119 faces, the part twice as large, with exit 0.
+  const fs::path part = fs::path(TQUAD_SHARED_CAD_DIR) / "918_pump_carter_sup_21_03_2006.stp";
+  if (!fs::exists(part)) GTEST_SKIP() << "no " << part << " (the CAD parts are not shipped)";
+  std::ifstream in(part);
+  std::stringstream whole;
+  whole << in.rdbuf();
+  std::string step = whole.str();
+  const std::string line = "#2815=ORIENTED_EDGE('',*,*,#2776,.F.);";
+  const std::size_t at = step.find(line);
+  ASSERT_NE(at, std::string::npos);
+  step.replace(at, line.size(), "#2815=ORIENTED_6,.F.);");
+  const std::string path = (fs::temp_directory_path() / "pump_line_cut.stp").string();
+  std::ofstream(path) << step;
+  try {
+    read_shape(path);
+    ADD_FAILURE() << "read with a line dropped";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is damaged: Undefined Parsing: Line 2466: Incorrect syntax"),
+              std::string::npos)
+        << e.what();
+  }
+  fs::remove(path);
+}
+
+TEST(ShapeMeshing, FacesLeftOutGiveTheirNeighboursRoomToBeEven) {
+  // 918_pump_carter_sup_21_03_2006.stp without its faces 98 to 100 (left out, as a
+  // damaged vertex there refuses them) kept face 37 odd with no odd partner and no
+  // edge of its own to change, and the whole part was refused; the edges beside the
+  // left-out faces give the way out.
+  const fs::path part = fs::path(TQUAD_SHARED_CAD_DIR) / "918_pump_carter_sup_21_03_2006.stp";
+  if (!fs::exists(part)) GTEST_SKIP() << "no " << part << " (the CAD parts are not shipped)";
+  ShapeMeshOptions options;
+  for (int f = 0; f < 119; ++f) if (f < 98 || f > 100) options.faces.push_back(f);
+  const ShapeMeshResult result = mesh_shape(read_shape(part.string()), options);
+  EXPECT_EQ(result.mesh.refused_faces.size(), 0u);
+  EXPECT_GT(result.mesh.quads.size(), 0u);
+}
+
 // Two boxes side by side written as one STEP file, returned as its text.
 std::string two_boxes_as_step() {
   TopoDS_Compound boxes;
