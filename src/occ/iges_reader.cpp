@@ -1,5 +1,7 @@
 #include <IGESControl_Reader.hxx>
+#include <IGESData_GlobalSection.hxx>
 #include <IGESData_IGESEntity.hxx>
+#include <IGESData_IGESModel.hxx>
 #include <IGESGeom_Boundary.hxx>
 #include <IGESGeom_BoundedSurface.hxx>
 #include <IGESGeom_CurveOnSurface.hxx>
@@ -12,6 +14,13 @@
 #include <Transfer_TransientProcess.hxx>
 #include <XSControl_TransferReader.hxx>
 #include <XSControl_WorkSession.hxx>
+
+#include <TCollection_HAsciiString.hxx>
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+#include <vector>
 
 #include "core/input_error.h"
 #include "occ/exchange_read_with.h"
@@ -79,13 +88,64 @@ void refuse_unread_face_entities(IGESControl_Reader& reader, const std::string& 
   }
 }
 
+// The unit names IGES gives each unit flag of the global section, and the spelled-out
+// names some writers use (flag 3: the name says the unit, so it is not checked here).
+std::vector<std::string> unit_names(int flag) {
+  switch (flag) {
+    case 1: return {"IN", "INCH", "INCHES"};
+    case 2: return {"MM", "MILLIMETER", "MILLIMETERS", "MILLIMETRE", "MILLIMETRES"};
+    case 4: return {"FT", "FOOT", "FEET"};
+    case 5: return {"MI", "MILE", "MILES"};
+    case 6: return {"M", "METER", "METERS", "METRE", "METRES"};
+    case 7: return {"KM", "KILOMETER", "KILOMETERS", "KILOMETRE", "KILOMETRES"};
+    case 8: return {"MIL", "MILS"};
+    case 9: return {"UM", "MICRON", "MICRONS", "MICROMETER", "MICROMETERS", "MICROMETRE", "MICROMETRES"};
+    case 10: return {"CM", "CENTIMETER", "CENTIMETERS", "CENTIMETRE", "CENTIMETRES"};
+    case 11: return {"UIN", "MICROINCH", "MICROINCHES"};
+    default: return {};
+  }
+}
+
+// A global section whose unit flag and unit name disagree: OpenCASCADE scales by the
+// flag alone, so one damaged digit scales the shape silently. The bracket written by
+// OpenCASCADE (flag 2, "MM") with its flag made 1 came out 25.4 times too large, and
+// made 9, 1000 times too small, both meshed with exit 0 (random edits of IGES files
+// find such digits). A flag outside IGES's 1 to 11 transferred nothing.
+void refuse_unit_disagreement(IGESControl_Reader& reader, const std::string& path) {
+  const auto model = Handle(IGESData_IGESModel)::DownCast(reader.Model());
+  if (model.IsNull()) return;
+  const IGESData_GlobalSection& global = model->GlobalSection();
+  const int flag = global.UnitFlag();
+  if (flag < 0 || flag > 11) {
+    throw InputError("'" + path + "' is damaged: its global section's unit flag is " + std::to_string(flag) +
+                     ", not one of IGES's units 1 to 11");
+  }
+  const std::vector<std::string> names = unit_names(flag);
+  const Handle(TCollection_HAsciiString) given = global.UnitName();
+  if (names.empty() || given.IsNull()) return;
+  std::string name = given->ToCString();
+  name.erase(std::remove_if(name.begin(), name.end(), [](unsigned char c) { return std::isspace(c); }), name.end());
+  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::toupper(c); });
+  if (name.empty() || std::find(names.begin(), names.end(), name) != names.end()) return;
+  throw InputError("'" + path + "' is damaged: its global section's unit flag " + std::to_string(flag) + " means " +
+                   names.front() + " but its unit name is '" + given->ToCString() +
+                   "'; OpenCASCADE would scale the shape by the flag");
+}
+
+// Everything that shows a file read in part or wrongly; for a file that transfers
+// nothing too.
+void refuse_partial_reading(IGESControl_Reader& reader, const std::string& path) {
+  refuse_unit_disagreement(reader, path);
+  refuse_unread_face_entities(reader, path);
+}
+
 }  // namespace
 
 TopoDS_Shape read_iges_file(const std::string& path) {
   IGESControl_Reader reader;
-  const TopoDS_Shape shape = read_with(reader, path, "IGES", &refuse_unread_face_entities);
+  const TopoDS_Shape shape = read_with(reader, path, "IGES", &refuse_partial_reading);
   refuse_lost_faces(reader, path);
-  refuse_unread_face_entities(reader, path);
+  refuse_partial_reading(reader, path);
   return shape;
 }
 

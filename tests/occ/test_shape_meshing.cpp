@@ -443,19 +443,24 @@ TEST(ShapeMeshing, IgesInput) {
   EXPECT_EQ(r.refused, 0);
 }
 
+// The shipped bracket written as IGES (in millimetres, B-rep entities) by OpenCASCADE.
+std::string bracket_as_iges() {
+  const TopoDS_Shape bracket = read_shape(std::string(TQUAD_SOURCE_DIR) + "/resources/shapes/filleted_bracket.brep");
+  IGESControl_Controller::Init();
+  IGESControl_Writer writer("MM", 1);
+  EXPECT_TRUE(writer.AddShape(bracket));
+  writer.ComputeModel();
+  std::ostringstream text;
+  EXPECT_TRUE(writer.Write(text));
+  return text.str();
+}
+
 TEST(ShapeMeshing, AnIgesShellThatLostAFaceIsRefused) {
   // The bracket as IGES with its first direction entity's type 123 made 193 (a
   // random edit did that): the face whose plane it orients does not transfer, and
   // OpenCASCADE's shell came through with 8 faces of 9, meshed with exit 0 before.
-  const TopoDS_Shape bracket = read_shape(std::string(TQUAD_SOURCE_DIR) + "/resources/shapes/filleted_bracket.brep");
   const std::string path = (fs::temp_directory_path() / "bracket_lost_face.igs").string();
-  IGESControl_Controller::Init();
-  IGESControl_Writer writer("MM", 1);
-  ASSERT_TRUE(writer.AddShape(bracket));
-  writer.ComputeModel();
-  std::ostringstream text;
-  ASSERT_TRUE(writer.Write(text));
-  std::string iges = text.str();
+  std::string iges = bracket_as_iges();
   const std::size_t direction = iges.find("\n123,");
   ASSERT_NE(direction, std::string::npos) << "no direction entity in the parameter section";
   iges.replace(direction + 1, 3, "193");
@@ -481,15 +486,8 @@ TEST(ShapeMeshing, AnIgesFaceThatDoesNotReadWholeIsRefused) {
   // The bracket as IGES with its first face's outer-loop flag 1 made 7: the face's
   // entity does not read whole. Random edits did that to a face of tank.brep written
   // as IGES, which came back with 53 faces of 52 and exit 0.
-  const TopoDS_Shape bracket = read_shape(std::string(TQUAD_SOURCE_DIR) + "/resources/shapes/filleted_bracket.brep");
   const std::string path = (fs::temp_directory_path() / "bracket_bad_face_flag.igs").string();
-  IGESControl_Controller::Init();
-  IGESControl_Writer writer("MM", 1);
-  ASSERT_TRUE(writer.AddShape(bracket));
-  writer.ComputeModel();
-  std::ostringstream text;
-  ASSERT_TRUE(writer.Write(text));
-  std::string iges = text.str();
+  std::string iges = bracket_as_iges();
   const std::size_t face = iges.find("\n510,");
   ASSERT_NE(face, std::string::npos) << "no face entity in the parameter section";
   const std::size_t flag = iges.find(",1,1,", face);
@@ -547,6 +545,27 @@ TEST(ShapeMeshing, FacesLeftOutGiveTheirNeighboursRoomToBeEven) {
   const ShapeMeshResult result = mesh_shape(read_shape(part.string()), options);
   EXPECT_EQ(result.mesh.refused_faces.size(), 0u);
   EXPECT_GT(result.mesh.quads.size(), 0u);
+}
+
+TEST(ShapeMeshing, AnIgesUnitFlagThatDisagreesWithItsNameIsRefused) {
+  // The bracket as IGES, unit flag 2 and name "MM", with the flag made 1 (inches):
+  // OpenCASCADE scales by the flag, and the bracket came out 25.4 times too large.
+  const std::string path = (fs::temp_directory_path() / "bracket_unit_flag.igs").string();
+  std::string iges = bracket_as_iges();
+  const std::size_t units = iges.find(",2,2HMM,");
+  ASSERT_NE(units, std::string::npos) << "no unit flag 2 and name MM in the global section";
+  std::ofstream(path) << iges;
+  EXPECT_EQ(count_faces(read_shape(path)), 9) << "the unedited bracket reads";
+  iges.replace(units, 8, ",1,2HMM,");
+  std::ofstream(path) << iges;
+  try {
+    read_shape(path);
+    ADD_FAILURE() << "read at another scale";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("unit flag 1 means IN but its unit name is 'MM'"), std::string::npos)
+        << e.what();
+  }
+  fs::remove(path);
 }
 
 // Two boxes side by side written as one STEP file, returned as its text.
