@@ -455,25 +455,11 @@ std::string bracket_as_iges() {
   return text.str();
 }
 
-TEST(ShapeMeshing, AnIgesShellThatLostAFaceIsRefused) {
-  // The bracket as IGES with its first direction entity's type 123 made 193 (a
-  // random edit did that): the face whose plane it orients does not transfer, and
-  // OpenCASCADE's shell came through with 8 faces of 9, meshed with exit 0 before.
-  const std::string path = (fs::temp_directory_path() / "bracket_lost_face.igs").string();
-  std::string iges = bracket_as_iges();
-  const std::size_t direction = iges.find("\n123,");
-  ASSERT_NE(direction, std::string::npos) << "no direction entity in the parameter section";
-  iges.replace(direction + 1, 3, "193");
-  std::ofstream(path) << iges;
-  try {
-    read_shape(path);
-    ADD_FAILURE() << "read with a face lost";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("is damaged: the shell at directory entry 5 lost its face 1 of 9"),
-              std::string::npos)
-        << e.what();
-  }
-  fs::remove(path);
+std::string file_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 int count_faces(const TopoDS_Shape& shape) {
@@ -482,27 +468,64 @@ int count_faces(const TopoDS_Shape& shape) {
   return faces;
 }
 
+// `text` written to a temporary file `name` and read: the faces read, or -1 with the
+// refusal's message in `refusal`.
+int faces_read(const std::string& name, const std::string& text, std::string& refusal) {
+  const std::string path = (fs::temp_directory_path() / name).string();
+  std::ofstream(path) << text;
+  int faces = -1;
+  try {
+    faces = count_faces(read_shape(path));
+  } catch (const InputError& e) {
+    refusal = e.what();
+  }
+  fs::remove(path);
+  return faces;
+}
+
+// `text` with its one `from` made `to`.
+std::string edited(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+TEST(ShapeMeshing, AnIgesShellThatLostAFaceIsRefused) {
+  // The bracket as IGES with its first direction entity's type 123 made 193 (a
+  // random edit did that): the face whose plane it orients does not transfer, and
+  // OpenCASCADE's shell came through with 8 faces of 9, meshed with exit 0 before.
+  std::string refusal;
+  EXPECT_EQ(faces_read("bracket_lost_face.igs", edited(bracket_as_iges(), "\n123,", "\n193,"), refusal), -1);
+  EXPECT_NE(refusal.find("is damaged: the shell at directory entry 5 lost its face 1 of 9"), std::string::npos)
+      << refusal;
+}
+
 TEST(ShapeMeshing, AnIgesFaceThatDoesNotReadWholeIsRefused) {
   // The bracket as IGES with its first face's outer-loop flag 1 made 7: the face's
   // entity does not read whole. Random edits did that to a face of tank.brep written
   // as IGES, which came back with 53 faces of 52 and exit 0.
-  const std::string path = (fs::temp_directory_path() / "bracket_bad_face_flag.igs").string();
   std::string iges = bracket_as_iges();
   const std::size_t face = iges.find("\n510,");
   ASSERT_NE(face, std::string::npos) << "no face entity in the parameter section";
   const std::size_t flag = iges.find(",1,1,", face);
-  ASSERT_EQ(iges.find(';', face) > flag, true) << "the first face's parameters are not surface, 1 loop, flag 1";
+  ASSERT_LT(flag, iges.find(';', face)) << "the first face's parameters are not surface, 1 loop, flag 1";
   iges.replace(flag, 5, ",1,7,");
-  std::ofstream(path) << iges;
-  try {
-    read_shape(path);
-    ADD_FAILURE() << "read with a face that did not read";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("(type 510) did not read (Parameter Data : parameter 3 (Outer Loop flag)"),
-              std::string::npos)
-        << e.what();
-  }
-  fs::remove(path);
+  std::string refusal;
+  EXPECT_EQ(faces_read("bracket_bad_face_flag.igs", iges, refusal), -1);
+  EXPECT_NE(refusal.find("(type 510) did not read (Parameter Data : parameter 3 (Outer Loop flag)"),
+            std::string::npos)
+      << refusal;
+}
+
+TEST(ShapeMeshing, AnIgesUnitFlagThatDisagreesWithItsNameIsRefused) {
+  // The bracket as IGES, unit flag 2 and name "MM", with the flag made 1 (inches):
+  // OpenCASCADE scales by the flag, and the bracket came out 25.4 times too large.
+  const std::string iges = bracket_as_iges();
+  std::string refusal;
+  EXPECT_EQ(faces_read("bracket.igs", iges, refusal), 9) << refusal;
+  EXPECT_EQ(faces_read("bracket_unit_flag.igs", edited(iges, ",2,2HMM,", ",1,2HMM,"), refusal), -1);
+  EXPECT_NE(refusal.find("unit flag 1 means IN but its unit name is 'MM'"), std::string::npos) << refusal;
 }
 
 TEST(ShapeMeshing, AStepLineCutShortIsRefusedNotMeshedLarger) {
@@ -512,25 +535,12 @@ TEST(ShapeMeshing, AStepLineCutShortIsRefusedNotMeshedLarger) {
   // face reach past it: all 119 faces, the part twice as large, with exit 0.
   const fs::path part = fs::path(TQUAD_SHARED_CAD_DIR) / "918_pump_carter_sup_21_03_2006.stp";
   if (!fs::exists(part)) GTEST_SKIP() << "no " << part << " (the CAD parts are not shipped)";
-  std::ifstream in(part);
-  std::stringstream whole;
-  whole << in.rdbuf();
-  std::string step = whole.str();
-  const std::string line = "#2815=ORIENTED_EDGE('',*,*,#2776,.F.);";
-  const std::size_t at = step.find(line);
-  ASSERT_NE(at, std::string::npos);
-  step.replace(at, line.size(), "#2815=ORIENTED_6,.F.);");
-  const std::string path = (fs::temp_directory_path() / "pump_line_cut.stp").string();
-  std::ofstream(path) << step;
-  try {
-    read_shape(path);
-    ADD_FAILURE() << "read with a line dropped";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("is damaged: Undefined Parsing: Line 2466: Incorrect syntax"),
-              std::string::npos)
-        << e.what();
-  }
-  fs::remove(path);
+  const std::string step =
+      edited(file_text(part), "#2815=ORIENTED_EDGE('',*,*,#2776,.F.);", "#2815=ORIENTED_6,.F.);");
+  std::string refusal;
+  EXPECT_EQ(faces_read("pump_line_cut.stp", step, refusal), -1);
+  EXPECT_NE(refusal.find("is damaged: Undefined Parsing: Line 2466: Incorrect syntax"), std::string::npos)
+      << refusal;
 }
 
 TEST(ShapeMeshing, FacesLeftOutGiveTheirNeighboursRoomToBeEven) {
@@ -547,27 +557,6 @@ TEST(ShapeMeshing, FacesLeftOutGiveTheirNeighboursRoomToBeEven) {
   EXPECT_GT(result.mesh.quads.size(), 0u);
 }
 
-TEST(ShapeMeshing, AnIgesUnitFlagThatDisagreesWithItsNameIsRefused) {
-  // The bracket as IGES, unit flag 2 and name "MM", with the flag made 1 (inches):
-  // OpenCASCADE scales by the flag, and the bracket came out 25.4 times too large.
-  const std::string path = (fs::temp_directory_path() / "bracket_unit_flag.igs").string();
-  std::string iges = bracket_as_iges();
-  const std::size_t units = iges.find(",2,2HMM,");
-  ASSERT_NE(units, std::string::npos) << "no unit flag 2 and name MM in the global section";
-  std::ofstream(path) << iges;
-  EXPECT_EQ(count_faces(read_shape(path)), 9) << "the unedited bracket reads";
-  iges.replace(units, 8, ",1,2HMM,");
-  std::ofstream(path) << iges;
-  try {
-    read_shape(path);
-    ADD_FAILURE() << "read at another scale";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("unit flag 1 means IN but its unit name is 'MM'"), std::string::npos)
-        << e.what();
-  }
-  fs::remove(path);
-}
-
 // Two boxes side by side written as one STEP file, returned as its text.
 std::string two_boxes_as_step() {
   TopoDS_Compound boxes;
@@ -577,36 +566,24 @@ std::string two_boxes_as_step() {
   builder.Add(boxes, BRepPrimAPI_MakeBox(gp_Pnt(20.0, 0.0, 0.0), 10.0, 10.0, 10.0).Shape());
   STEPControl_Writer writer;
   EXPECT_EQ(writer.Transfer(boxes, STEPControl_AsIs), IFSelect_RetDone);
-  const std::string path = (fs::temp_directory_path() / "two_boxes_written.step").string();
-  EXPECT_EQ(writer.Write(path.c_str()), IFSelect_RetDone);
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
+  const fs::path path = fs::temp_directory_path() / "two_boxes_written.step";
+  EXPECT_EQ(writer.Write(path.string().c_str()), IFSelect_RetDone);
+  const std::string text = file_text(path);
   fs::remove(path);
-  return text.str();
+  return text;
 }
 
 TEST(ShapeMeshing, AStepBodyWhoseShellDoesNotReadIsRefused) {
   // The first CLOSED_SHELL's type name damaged: its MANIFOLD_SOLID_BREP no longer
   // reads, OpenCASCADE transfers the other box alone, and the file was meshed as
   // one box of two with exit 0 (found so on a five-body part).
-  std::string step = two_boxes_as_step();
-  const std::string path = (fs::temp_directory_path() / "two_boxes_one_shell_damaged.step").string();
-  std::ofstream(path) << step;
-  EXPECT_EQ(count_faces(read_shape(path)), 12) << "the undamaged file holds both boxes";
-  const std::size_t shell = step.find("CLOSED_SHELL(");
-  ASSERT_NE(shell, std::string::npos);
-  step.replace(shell, 12, "CLOSED_SHELX");
-  std::ofstream(path) << step;
-  try {
-    read_shape(path);
-    ADD_FAILURE() << "read with a body lost";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("(MANIFOLD_SOLID_BREP) did not read (Parameter n0.2 (outer)"),
-              std::string::npos)
-        << e.what();
-  }
-  fs::remove(path);
+  const std::string step = two_boxes_as_step();
+  std::string refusal;
+  EXPECT_EQ(faces_read("two_boxes.step", step, refusal), 12) << refusal;
+  EXPECT_EQ(faces_read("two_boxes_one_shell_damaged.step", edited(step, "CLOSED_SHELL(", "CLOSED_SHELX("), refusal),
+            -1);
+  EXPECT_NE(refusal.find("(MANIFOLD_SOLID_BREP) did not read (Parameter n0.2 (outer)"), std::string::npos)
+      << refusal;
 }
 
 TEST(ShapeMeshing, ExampleShapes) { check_folder(fs::path(TQUAD_SOURCE_DIR) / "resources" / "shapes"); }
