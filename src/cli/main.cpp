@@ -117,6 +117,9 @@ int run_cli(int argc, char** argv) {
   mesh->add_flag("--allow-inverted", command.shape.allow_inverted,
                  "CAD input: keep a face whose mesh still has inverted quads after repair\n"
                  "(reported) instead of refusing it");
+  mesh->add_flag("--sew", command.shape.sew,
+                 "CAD input: join faces that touch without sharing their edge (an IGES file of\n"
+                 "trimmed surfaces) before meshing, so the mesh is connected there");
   mesh->add_option("--order", command.shape.order,
                    "CAD input: 1 four-node quads (default); 2 eight-node quads, a node in the\n"
                    "middle of each edge on the curve or surface (.vtu, .inp as S8R, .msh, .json)")

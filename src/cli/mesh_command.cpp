@@ -116,6 +116,7 @@ void print_summary(std::ostream& out, const MeshCommand& command, const ShapeMes
           << "): meshed with other corners (" << fixed(search->chosen_worst, 3) << ")\n";
     }
   } else {
+    if (shape && command.shape.sew) out << "  sewn: " << shape->sewn_edges << " edge(s) merged into their neighbours\n";
     out << "  faces " << mesh.faces.size() << " meshed, " << mesh.refused_faces.size() << " refused\n";
     for (const FaceMesh& f : mesh.faces) {
       out << "  face " << f.face << ": " << f.quad_count << " quads, template tree " << f.template_tree << "\n";
@@ -247,7 +248,8 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
     err << "tquad: warning: " << shape_result.unsewn_edges.size()
         << " pair(s) of edges lie on each other without being shared (the file's faces are not sewn there, "
         << "first: edges " << first.first << " and " << first.second
-        << "): the mesh is not connected along them (--report json lists them)\n";
+        << "): the mesh is not connected along them (--report json lists them"
+        << (command.shape.sew ? "" : "; --sew joins them") << ")\n";
   }
   if (command.report_json) {
     nlohmann::ordered_json report = mesh_report_json(shape, quality);
@@ -275,6 +277,7 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
       nlohmann::ordered_json unsewn = nlohmann::ordered_json::array();
       for (const UnsewnEdgePair& p : shape_result.unsewn_edges) unsewn.push_back({p.first, p.second});
       report["unsewn_edge_pairs"] = unsewn;
+      if (command.shape.sew) report["sewn_edges"] = shape_result.sewn_edges;
     }
     // Reasons of refused faces may come from other libraries: never fail on bad UTF-8.
     out << report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";

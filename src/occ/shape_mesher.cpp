@@ -23,6 +23,7 @@
 #include "core/input_error.h"
 #include "occ/cusp_ends.h"
 #include "occ/edge_discretization.h"
+#include "occ/face_sewing.h"
 #include "occ/mid_edge_nodes.h"
 #include "occ/face_boundary.h"
 #include "occ/face_corners.h"
@@ -449,7 +450,11 @@ ShapeMeshResult mesh_shape(const TopoDS_Shape& shape, const ShapeMeshOptions& op
   if (options.order != 1 && options.order != 2) {
     throw InputError("the element order must be 1 or 2, not " + std::to_string(options.order));
   }
-  return ShapeMeshContext(shape, options).run();
+  if (!options.sew) return ShapeMeshContext(shape, options).run();
+  const SewnShape sewn = sew_faces(shape);
+  ShapeMeshResult result = ShapeMeshContext(sewn.shape, options).run();
+  result.sewn_edges = sewn.edges_before - sewn.edges_after;
+  return result;
 }
 
 }  // namespace tquad

@@ -87,6 +87,9 @@ struct ShapeMeshOptions {
   // Keep a face whose mesh still has inverted quads after repair (counted in
   // ShapeMeshResult::inverted) instead of refusing it.
   bool allow_inverted = false;
+  // Join faces that touch without sharing their edge before meshing (face_sewing.h),
+  // so the mesh is connected there; face numbers stay the shape's.
+  bool sew = false;
   // Called at each stage's start and end, and after each face (from worker threads,
   // one call at a time). May be empty.
   std::function<void(const MeshProgress&)> progress;
@@ -113,6 +116,9 @@ struct ShapeMeshResult {
   // Edges of meshed faces that lie on each other without being one edge (the file's
   // faces are not sewn there): the mesh has a crack along each (unsewn_edges.h).
   std::vector<UnsewnEdgePair> unsewn_edges;
+  // With ShapeMeshOptions::sew: the edges sewing merged away (the shape's edge count
+  // before, less after).
+  int sewn_edges = 0;
   double template_seconds = 0;           // summed over faces (all threads)
   double placement_seconds = 0;          // interior nodes onto the surfaces, summed
   double meshing_seconds = 0;            // every face's routes before smoothing, summed

@@ -164,8 +164,9 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
                             const std::map<int, std::vector<int>>& corners, bool keep_going,
                             bool allow_inverted, int threads, int t4_ratio, int t5_cut_edges,
                             long long max_quads, bool smooth, const py::object& progress,
-                            double read_timeout, bool best_corners, double min_size, int order) {
+                            double read_timeout, bool best_corners, double min_size, int order, bool sew) {
   ShapeMeshOptions options;
+  options.sew = sew;
   options.order = order;  // checked by mesh_shape (1 or 2)
   options.smooth = smooth;
   options.best_corners = best_corners;
@@ -248,6 +249,7 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
   py::list unsewn;
   for (const UnsewnEdgePair& p : result.unsewn_edges) unsewn.append(py::make_tuple(p.first, p.second));
   out["unsewn_edge_pairs"] = unsewn;
+  out["sewn_edges"] = result.sewn_edges;
   return out;
 }
 
@@ -281,5 +283,6 @@ PYBIND11_MODULE(_core, m) {
   m.def("mesh_shape", &tquad::mesh_shape_binding, py::arg("brep_text_or_path"), py::arg("size"),
         py::arg("faces"), py::arg("corners"), py::arg("keep_going"), py::arg("allow_inverted"),
         py::arg("threads"), py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("smooth"),
-        py::arg("progress"), py::arg("read_timeout"), py::arg("best_corners"), py::arg("min_size"), py::arg("order"));
+        py::arg("progress"), py::arg("read_timeout"), py::arg("best_corners"), py::arg("min_size"), py::arg("order"),
+        py::arg("sew"));
 }

@@ -491,6 +491,40 @@ std::string edited(std::string text, const std::string& from, const std::string&
   return text;
 }
 
+TEST(ShapeMeshing, SewingJoinsTrimmedSurfacesIntoTheSolidsMesh) {
+  // The bracket written as IGES trimmed surfaces (type 144, as many systems write
+  // IGES): each face comes with edges of its own, so the mesh falls apart along 21
+  // pairs of edges. Sewn, it is the B-rep bracket's mesh again: the same nodes and
+  // quads, and no unsewn pair; face numbers stay those of the file.
+  const std::string source = std::string(TQUAD_SOURCE_DIR) + "/resources/shapes/filleted_bracket.brep";
+  const TopoDS_Shape bracket = read_shape(source);
+  IGESControl_Controller::Init();
+  IGESControl_Writer writer("MM", 0);
+  ASSERT_TRUE(writer.AddShape(bracket));
+  writer.ComputeModel();
+  const fs::path path = fs::temp_directory_path() / "bracket_trimmed_surfaces.igs";
+  ASSERT_TRUE(writer.Write(path.string().c_str()));
+  const TopoDS_Shape faces = read_shape(path.string());
+  fs::remove(path);
+  const ShapeMeshResult solid = mesh_shape(bracket, ShapeMeshOptions{});
+  const ShapeMeshResult apart = mesh_shape(faces, ShapeMeshOptions{});
+  EXPECT_EQ(apart.unsewn_edges.size(), 21u);
+  EXPECT_GT(apart.mesh.nodes.size(), solid.mesh.nodes.size());
+  ShapeMeshOptions sew;
+  sew.sew = true;
+  const ShapeMeshResult sewn = mesh_shape(faces, sew);
+  EXPECT_EQ(sewn.sewn_edges, 21);
+  EXPECT_TRUE(sewn.unsewn_edges.empty());
+  EXPECT_EQ(sewn.mesh.nodes.size(), solid.mesh.nodes.size());
+  EXPECT_EQ(sewn.mesh.quads.size(), solid.mesh.quads.size());
+  ASSERT_EQ(sewn.mesh.faces.size(), apart.mesh.faces.size());
+  for (std::size_t i = 0; i < sewn.mesh.faces.size(); ++i) EXPECT_EQ(sewn.mesh.faces[i].face, apart.mesh.faces[i].face);
+  // Sewing a shape that has no free edges changes nothing.
+  const ShapeMeshResult solid_sewn = mesh_shape(bracket, sew);
+  EXPECT_EQ(solid_sewn.sewn_edges, 0);
+  EXPECT_EQ(solid_sewn.mesh.nodes.size(), solid.mesh.nodes.size());
+}
+
 TEST(ShapeMeshing, AnIgesShellThatLostAFaceIsRefused) {
   // The bracket as IGES with its first direction entity's type 123 made 193 (a
   // random edit did that): the face whose plane it orients does not transfer, and

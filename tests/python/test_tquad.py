@@ -77,6 +77,18 @@ class MeshShapeTest(unittest.TestCase):
         self.assertEqual(sum(f["quad_count"] for f in m.faces), len(m.quads), "face ranges cover the quads")
         self.assertGreater(m.edge_size, 0, "default size reported")
 
+    def test_sewing_a_shape_without_free_edges_changes_nothing(self):
+        # tests/occ/test_shape_meshing.cpp sews the bracket written as IGES trimmed
+        # surfaces (21 edges merged); here the option's way through the module.
+        path = os.path.join(SHAPES, "filleted_bracket.brep")
+        plain = tquad.mesh_shape(path)
+        sewn = tquad.mesh_shape(path, sew=True)
+        self.assertEqual(plain.sewn_edges, 0)
+        self.assertEqual(sewn.sewn_edges, 0)
+        self.assertEqual(sewn.unsewn_edge_pairs, [])
+        self.assertTrue(np.array_equal(plain.quads, sewn.quads))
+        self.assertTrue(np.array_equal(plain.nodes, sewn.nodes))
+
     def test_brep_text_gives_the_same_mesh_as_the_file(self):
         path = os.path.join(SHAPES, "cylinder.brep")
         with open(path) as f:

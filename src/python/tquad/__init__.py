@@ -67,7 +67,9 @@ class Mesh:
             every face's total is even: dicts ``edge``, ``from``, ``to``.
         unsewn_edge_pairs: for a shape, pairs of edges that lie on each other
             without being one edge (the file's faces are not sewn there): the mesh
-            is not connected along them.
+            is not connected along them (``sew=True`` joins them).
+        sewn_edges: for a shape meshed with ``sew=True``, the edges merged into
+            their neighbours; else 0.
     """
 
     def __init__(self, data: dict):
@@ -79,6 +81,7 @@ class Mesh:
         self.edge_size: Optional[float] = data.get("edge_size")
         self.changed_edges: List[dict] = data.get("changed_edges", [])
         self.unsewn_edge_pairs: List[Tuple[int, int]] = data.get("unsewn_edge_pairs", [])
+        self.sewn_edges: int = data.get("sewn_edges", 0)
         self.scaled_jacobian: np.ndarray = data["scaled_jacobian"]
         self.lee_lo: np.ndarray = data["lee_lo"]
         self.mid_nodes: Optional[np.ndarray] = data.get("mid_nodes")
@@ -148,7 +151,7 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
                max_quads: int = _MAX_QUADS, smooth: bool = True,
                progress: Optional[Callable[[str, int, int], Optional[bool]]] = None,
                read_timeout: float = 300.0, best_corners: bool = False,
-               min_size: float = 0.0, order: int = 1) -> Mesh:
+               min_size: float = 0.0, order: int = 1, sew: bool = False) -> Mesh:
     """Mesh the faces of a CAD shape, conforming across shared edges.
 
     Args:
@@ -181,6 +184,10 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
             beside the chosen ones (the CLI's --corners best).
         order: 1 for four-node quads; 2 adds a node in the middle of every quad
             edge, on the CAD edge's curve or the face's surface (``mid_nodes``).
+        sew: first join faces that touch without sharing their edge (an IGES file
+            of trimmed surfaces: ``unsewn_edge_pairs`` lists such edges), so the
+            mesh is connected there; face numbers stay the shape's, and
+            ``sewn_edges`` counts the edges merged.
 
     Raises:
         Cancelled: the progress callback asked to stop (nothing is returned).
@@ -194,4 +201,4 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
                                  bool(keep_going), bool(allow_inverted), int(threads),
                                  int(t4_ratio), int(t5_cut_edges), int(max_quads), bool(smooth),
                                  progress, float(read_timeout), bool(best_corners),
-                                 float(min_size), int(order)))
+                                 float(min_size), int(order), bool(sew)))

@@ -1,0 +1,27 @@
+// sew_faces: the faces of a shape joined along the edges where they touch without
+// sharing one (unsewn_edges.h), so those edges are cut once and the mesh is connected
+// there.
+//
+// IGES files from many systems hold trimmed surfaces (type 144) with no topology
+// between them: every face comes with edges of its own. Meshed so, each face's mesh
+// ends on its own nodes and the mesh falls apart into faces (tank.brep written so by
+// OpenCASCADE: 90 unsewn pairs among 52 faces). OpenCASCADE's sewing
+// (BRepBuilderAPI_Sewing) merges such edges.
+#pragma once
+
+#include <TopoDS_Shape.hxx>
+
+namespace tquad {
+
+struct SewnShape {
+  TopoDS_Shape shape;  // a compound of the sewn faces, in the shape's face order
+  int edges_before = 0, edges_after = 0;
+};
+
+// Sews the free edges that lie on each other within four times the largest tolerance
+// of the free edges and their vertices (the unsewn pairs' criterion, unsewn_edges.h),
+// and returns the faces in their order in `shape` (TopExp's face map), so face
+// numbers stay those of the file. A shape without free edges comes back as it is.
+SewnShape sew_faces(const TopoDS_Shape& shape);
+
+}  // namespace tquad
