@@ -217,6 +217,22 @@ class MeshObjectTest(unittest.TestCase):
         self.doc.recompute()
         self._assert_same_as_tquad(mesh, part.Shape, 3.0, best_corners=True)
 
+    def test_sew_joins_faces_that_do_not_share_their_edges(self):
+        # A box's faces copied one by one share no edge (as an IGES import of trimmed
+        # surfaces): meshed apart, each face on its own edges; with Sew, the box's mesh.
+        from freecad.templatequad import make_mesh
+        box = Part.makeBox(10, 20, 30)
+        whole = make_mesh(self.doc, self._part(box, "WholeBox"), size=5.0)
+        apart_part = self._part(Part.Compound([face.copy() for face in box.Faces]), "BoxFacesApart")
+        apart = make_mesh(self.doc, apart_part, size=5.0)
+        self.assertFalse(apart.Sew, "sewing is off by default")
+        self.assertGreater(apart.FemMesh.NodeCount, whole.FemMesh.NodeCount, "faces meshed apart")
+        apart.Sew = True
+        self.doc.recompute()
+        self.assertEqual(apart.FemMesh.NodeCount, whole.FemMesh.NodeCount, "sewn: the box's nodes")
+        self.assertEqual(apart.FemMesh.FaceCount, whole.FemMesh.FaceCount, "sewn: the box's quads")
+        self._assert_same_as_tquad(apart, apart_part.Shape, 5.0, sew=True)
+
     def test_changing_size_remeshes_on_recompute(self):
         from freecad.templatequad import make_mesh
         part = self._part(self._filleted_box(), "FilletedBox")

@@ -19,7 +19,7 @@ def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]]
               t4_ratio: int = 2, keep_going: bool = False, name: str = "TemplateQuadMesh",
               faces: Optional[Iterable[str]] = None, raise_on_error: bool = True,
               min_size: float = 0.0, smooth: bool = True, best_corners: bool = False,
-              accept_incomplete: bool = False, element_order: str = "1st"):
+              accept_incomplete: bool = False, element_order: str = "1st", sew: bool = False):
     """make_mesh(): add a TemplateQuad mesh of part_obj to doc, recompute, return it.
 
     Args:
@@ -41,6 +41,7 @@ def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]]
         smooth, best_corners, accept_incomplete: the Smooth, BestCorners and
             AcceptIncomplete properties.
         element_order: "1st" (4-node quads) or "2nd" (8-node quads), ElementOrder.
+        sew: the Sew property: join faces that touch without sharing their edge.
 
     Returns:
         The mesh object; None when the user cancelled the meshing in the GUI's
@@ -74,6 +75,7 @@ def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]]
     obj.Faces = list(faces or [])
     obj.T4Ratio = int(t4_ratio)
     obj.KeepGoing = bool(keep_going)
+    obj.Sew = bool(sew)
     if FreeCAD.GuiUp:
         from .view_provider import ViewProviderTemplateQuadMesh
         ViewProviderTemplateQuadMesh(obj.ViewObject)

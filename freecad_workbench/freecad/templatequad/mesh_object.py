@@ -19,6 +19,7 @@ Gmsh mesh object, where they mean the same):
     Smooth                   optimize node positions on the surfaces
     BestCorners              search more corner choices per face (slower)
     Corners                  "FACE:V1,V2,..." entries overriding the automatic corners
+    Sew                      join faces that touch without sharing their edge first
     KeepGoing                mesh the other faces when one is refused
     AcceptIncomplete         let the CalculiX solver run on a mesh with refused faces
     T4Ratio                  (advanced) the k of the T4 template test
@@ -62,6 +63,10 @@ _INPUTS = (
      "Corner overrides, one per face: FACE:V1,V2,... with 2 to 4 vertices where the "
      "face's curves begin, as FreeCAD names (Face4:Vertex1,Vertex5,Vertex8) or 0-based "
      "tquad indices (3:0,4,7)"),
+    ("App::PropertyBool", "Sew",
+     "Join faces that touch without sharing their edge (an IGES import of trimmed "
+     "surfaces) before meshing, so the mesh is connected there; off, such faces are "
+     "meshed each on its own edge"),
     ("App::PropertyBool", "KeepGoing",
      "Mesh the other faces when one is refused (refused faces are listed in RefusedFaces "
      "and the mesh is marked Incomplete)"),
@@ -75,7 +80,7 @@ _INPUTS = (
 ELEMENT_ORDERS = ["1st", "2nd"]
 # Values of new properties, for new objects and for files saved before they existed
 # (so those files mesh as they did).
-_DEFAULTS = {"T4Ratio": 2, "Smooth": True, "BestCorners": False}
+_DEFAULTS = {"T4Ratio": 2, "Smooth": True, "BestCorners": False, "Sew": False}
 ELEMENT_QUALITY = "ElementQuality"
 _OUTPUTS = (
     ("App::PropertyString", "Quality", "Element count and quality, one line"),
@@ -233,7 +238,7 @@ class TemplateQuadMesh(StatelessProxy):
             min_size=obj.CharacteristicLengthMin.Value, faces=meshing.parse_faces(obj.Faces),
             corners=meshing.parse_corners(obj.Corners), t4_ratio=obj.T4Ratio,
             keep_going=True, smooth=obj.Smooth, best_corners=obj.BestCorners,
-            order=element_order_number(obj), progress=progress), f"Meshing {obj.Part.Label}")
+            order=element_order_number(obj), sew=obj.Sew, progress=progress), f"Meshing {obj.Part.Label}")
 
     @staticmethod
     def _source_shape(obj):

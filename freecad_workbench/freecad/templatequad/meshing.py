@@ -112,7 +112,7 @@ def parse_faces(names: Iterable[str]) -> Optional[List[int]]:
 def mesh_shape(shape, size: float = 0.0, faces: Optional[Sequence[int]] = None,
                corners: Optional[Dict[int, List[int]]] = None, t4_ratio: int = 2,
                keep_going: bool = False, smooth: bool = True, best_corners: bool = False,
-               min_size: float = 0.0, order: int = 1, progress=None):
+               min_size: float = 0.0, order: int = 1, sew: bool = False, progress=None):
     """mesh_shape(): mesh a Part.Shape with tquad; returns the tquad.Mesh.
 
     The shape goes over as BREP text (``exportBrepToString``), which keeps its
@@ -128,7 +128,7 @@ def mesh_shape(shape, size: float = 0.0, faces: Optional[Sequence[int]] = None,
                             corners=corners or None, keep_going=bool(keep_going),
                             t4_ratio=int(t4_ratio), smooth=bool(smooth),
                             best_corners=bool(best_corners), min_size=float(min_size),
-                            order=int(order), progress=progress)
+                            order=int(order), sew=bool(sew), progress=progress)
 
 
 def run_plain(work, title: str = ""):
