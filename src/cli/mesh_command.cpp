@@ -108,6 +108,7 @@ void print_summary(std::ostream& out, const MeshCommand& command, const ShapeMes
     }
     out << "\n";
   }
+  if (shape && command.shape.sew) out << "  sewn: " << shape->sewn_edges << " edge(s) merged into their neighbours\n";
   if (mesh.faces.size() == 1 && mesh.refused_faces.empty()) {
     out << "  template tree " << mesh.faces[0].template_tree << "\n";
     const std::optional<CornerSearch>& search = mesh.faces[0].corner_search;
@@ -116,7 +117,6 @@ void print_summary(std::ostream& out, const MeshCommand& command, const ShapeMes
           << "): meshed with other corners (" << fixed(search->chosen_worst, 3) << ")\n";
     }
   } else {
-    if (shape && command.shape.sew) out << "  sewn: " << shape->sewn_edges << " edge(s) merged into their neighbours\n";
     out << "  faces " << mesh.faces.size() << " meshed, " << mesh.refused_faces.size() << " refused\n";
     for (const FaceMesh& f : mesh.faces) {
       out << "  face " << f.face << ": " << f.quad_count << " quads, template tree " << f.template_tree << "\n";

@@ -2,65 +2,37 @@
 
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRep_Builder.hxx>
-#include <BRep_Tool.hxx>
 #include <TopExp.hxx>
-#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
-#include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 
 #include <algorithm>
 
+#include "occ/shape_index.h"
+#include "occ/unsewn_edges.h"
+
 namespace tquad {
 
-namespace {
-
-int count_edges(const TopoDS_Shape& shape) {
-  TopTools_IndexedMapOfShape edges;
-  TopExp::MapShapes(shape, TopAbs_EDGE, edges);
-  return edges.Extent();
-}
-
-// The largest tolerance of the edges on one face only (not seams, not degenerated)
-// and of their vertices; 0 when there is no such edge.
-double widest_free_edge_tolerance(const TopoDS_Shape& shape) {
-  TopTools_IndexedDataMapOfShapeListOfShape faces_of_edge;
-  TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, faces_of_edge);
-  double widest = 0;
-  for (int i = 1; i <= faces_of_edge.Extent(); ++i) {
-    const TopoDS_Edge& edge = TopoDS::Edge(faces_of_edge.FindKey(i));
-    if (faces_of_edge(i).Extent() != 1 || BRep_Tool::Degenerated(edge)) continue;
-    if (BRep_Tool::IsClosed(edge, TopoDS::Face(faces_of_edge(i).First()))) continue;  // a seam
-    TopoDS_Vertex first, last;
-    TopExp::Vertices(edge, first, last);
-    widest = std::max(widest, BRep_Tool::Tolerance(edge));
-    if (!first.IsNull()) widest = std::max(widest, BRep_Tool::Tolerance(first));
-    if (!last.IsNull()) widest = std::max(widest, BRep_Tool::Tolerance(last));
-  }
-  return widest;
-}
-
-}  // namespace
-
 SewnShape sew_faces(const TopoDS_Shape& shape) {
-  SewnShape result{shape, count_edges(shape), 0};
-  result.edges_after = result.edges_before;
-  const double tolerance = 4 * widest_free_edge_tolerance(shape);
-  if (!(tolerance > 0)) return result;
+  const ShapeIndex index(shape);
+  SewnShape result{shape, index.edge_count(), index.edge_count()};
+  double tolerance = 0;
+  for (const UnsewnEdgePair& pair : unsewn_edge_pairs(index)) tolerance = std::max(tolerance, pair.tolerance);
+  if (!(tolerance > 0)) return result;  // no unsewn pair: nothing to sew
   BRepBuilderAPI_Sewing sewing(tolerance);
   sewing.Add(shape);
   sewing.Perform();
-  TopTools_IndexedMapOfShape faces;
-  TopExp::MapShapes(shape, TopAbs_FACE, faces);
   TopoDS_Compound sewn;
   BRep_Builder builder;
   builder.MakeCompound(sewn);
-  for (int i = 1; i <= faces.Extent(); ++i) {
-    const TopoDS_Shape& face = faces(i);
+  for (int f = 0; f < index.face_count(); ++f) {
+    const TopoDS_Shape& face = index.face(f);
     builder.Add(sewn, sewing.IsModifiedSubShape(face) ? sewing.ModifiedSubShape(face) : face);
   }
+  TopTools_IndexedMapOfShape edges;
+  TopExp::MapShapes(sewn, TopAbs_EDGE, edges);
   result.shape = sewn;
-  result.edges_after = count_edges(sewn);
+  result.edges_after = edges.Extent();
   return result;
 }
 

@@ -18,10 +18,10 @@ struct SewnShape {
   int edges_before = 0, edges_after = 0;
 };
 
-// Sews the free edges that lie on each other within four times the largest tolerance
-// of the free edges and their vertices (the unsewn pairs' criterion, unsewn_edges.h),
-// and returns the faces in their order in `shape` (TopExp's face map), so face
-// numbers stay those of the file. A shape without free edges comes back as it is.
+// Sews the unsewn edge pairs (unsewn_edges.h) within the widest distance they were
+// found to coincide in, and returns the faces in their order in `shape` (the shape
+// index's), so face numbers stay those of the file. A shape without an unsewn pair
+// comes back as it is.
 SewnShape sew_faces(const TopoDS_Shape& shape);
 
 }  // namespace tquad

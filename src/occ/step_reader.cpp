@@ -30,6 +30,9 @@
 #include <XSControl_TransferReader.hxx>
 #include <XSControl_WorkSession.hxx>
 
+#include <algorithm>
+#include <iterator>
+
 #include "core/input_error.h"
 #include "occ/exchange_read_with.h"
 #include "occ/exchange_reader.h"
@@ -81,26 +84,30 @@ void refuse_lost_faces(STEPControl_Reader& reader, const std::string& path) {
 // two of the nine STEP parts in ../shared/data/cad carry 183 and 227 point styles
 // that do not read, and a solid angle unit with a parameter too many, and mesh whole.
 bool carries_shape(const Handle(Standard_Transient)& entity) {
-  return entity->IsKind(STANDARD_TYPE(StepGeom_GeometricRepresentationItem)) ||
-         entity->IsKind(STANDARD_TYPE(StepRepr_RepresentationContext)) ||
-         entity->IsKind(STANDARD_TYPE(StepBasic_SiUnitAndLengthUnit)) ||
-         entity->IsKind(STANDARD_TYPE(StepBasic_SiUnitAndPlaneAngleUnit)) ||
-         entity->IsKind(STANDARD_TYPE(StepBasic_ConversionBasedUnitAndLengthUnit)) ||
-         entity->IsKind(STANDARD_TYPE(StepBasic_ConversionBasedUnitAndPlaneAngleUnit)) ||
-         entity->IsKind(STANDARD_TYPE(StepBasic_LengthUnit)) || entity->IsKind(STANDARD_TYPE(StepBasic_PlaneAngleUnit)) ||
-         entity->IsKind(STANDARD_TYPE(StepBasic_LengthMeasureWithUnit)) ||
-         entity->IsKind(STANDARD_TYPE(StepBasic_PlaneAngleMeasureWithUnit)) ||
-         entity->IsKind(STANDARD_TYPE(StepShape_TopologicalRepresentationItem)) ||
-         entity->IsKind(STANDARD_TYPE(StepShape_ShapeRepresentation)) ||
-         entity->IsKind(STANDARD_TYPE(StepShape_ShapeDefinitionRepresentation)) ||
-         entity->IsKind(STANDARD_TYPE(StepShape_ContextDependentShapeRepresentation)) ||
-         entity->IsKind(STANDARD_TYPE(StepRepr_RepresentationRelationship)) ||
-         entity->IsKind(STANDARD_TYPE(StepRepr_RepresentationMap)) ||
-         entity->IsKind(STANDARD_TYPE(StepRepr_MappedItem)) ||
-         entity->IsKind(STANDARD_TYPE(StepRepr_ItemDefinedTransformation)) ||
-         entity->IsKind(STANDARD_TYPE(StepRepr_ProductDefinitionShape)) ||
-         entity->IsKind(STANDARD_TYPE(StepRepr_ProductDefinitionUsage)) ||
-         entity->IsKind(STANDARD_TYPE(StepBasic_ProductDefinition));
+  static const Handle(Standard_Type) kinds[] = {
+      STANDARD_TYPE(StepGeom_GeometricRepresentationItem),
+      STANDARD_TYPE(StepRepr_RepresentationContext),
+      STANDARD_TYPE(StepBasic_SiUnitAndLengthUnit),
+      STANDARD_TYPE(StepBasic_SiUnitAndPlaneAngleUnit),
+      STANDARD_TYPE(StepBasic_ConversionBasedUnitAndLengthUnit),
+      STANDARD_TYPE(StepBasic_ConversionBasedUnitAndPlaneAngleUnit),
+      STANDARD_TYPE(StepBasic_LengthUnit),
+      STANDARD_TYPE(StepBasic_PlaneAngleUnit),
+      STANDARD_TYPE(StepBasic_LengthMeasureWithUnit),
+      STANDARD_TYPE(StepBasic_PlaneAngleMeasureWithUnit),
+      STANDARD_TYPE(StepShape_TopologicalRepresentationItem),
+      STANDARD_TYPE(StepShape_ShapeRepresentation),
+      STANDARD_TYPE(StepShape_ShapeDefinitionRepresentation),
+      STANDARD_TYPE(StepShape_ContextDependentShapeRepresentation),
+      STANDARD_TYPE(StepRepr_RepresentationRelationship),
+      STANDARD_TYPE(StepRepr_RepresentationMap),
+      STANDARD_TYPE(StepRepr_MappedItem),
+      STANDARD_TYPE(StepRepr_ItemDefinedTransformation),
+      STANDARD_TYPE(StepRepr_ProductDefinitionShape),
+      STANDARD_TYPE(StepRepr_ProductDefinitionUsage),
+      STANDARD_TYPE(StepBasic_ProductDefinition)};
+  return std::any_of(std::begin(kinds), std::end(kinds),
+                     [&](const Handle(Standard_Type)& kind) { return entity->IsKind(kind); });
 }
 
 // An entity of the shape that did not read whole (one of its references names an

@@ -44,8 +44,11 @@ bool free_edge(const ShapeIndex& index, int e, FreeEdge& out) {
   }
 }
 
+// Within which two free edges count as one: twice their tolerances summed.
+double coincidence_tolerance(const FreeEdge& a, const FreeEdge& b) { return 2 * (a.tolerance + b.tolerance); }
+
 bool coincide(const FreeEdge& a, const FreeEdge& b) {
-  const double tolerance = 2 * (a.tolerance + b.tolerance);
+  const double tolerance = coincidence_tolerance(a, b);
   const bool same_ends = (a.first.Distance(b.first) <= tolerance && a.last.Distance(b.last) <= tolerance) ||
                          (a.first.Distance(b.last) <= tolerance && a.last.Distance(b.first) <= tolerance);
   return same_ends && a.middle.Distance(b.middle) <= tolerance;
@@ -70,7 +73,8 @@ std::vector<UnsewnEdgePair> unsewn_edge_pairs(const ShapeIndex& index) {
   for (std::size_t i = 0; i < edges.size(); ++i) {
     for (std::size_t j = i + 1; j < edges.size() && edges[j].middle.X() - edges[i].middle.X() <= 4 * widest; ++j) {
       if (coincide(edges[i], edges[j])) {
-        pairs.push_back({std::min(edges[i].edge, edges[j].edge), std::max(edges[i].edge, edges[j].edge)});
+        pairs.push_back({std::min(edges[i].edge, edges[j].edge), std::max(edges[i].edge, edges[j].edge),
+                         coincidence_tolerance(edges[i], edges[j])});
       }
     }
   }

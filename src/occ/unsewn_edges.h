@@ -15,6 +15,7 @@ namespace tquad {
 
 struct UnsewnEdgePair {
   int first = 0, second = 0;  // edge indices, first < second
+  double tolerance = 0;       // the distance within which they were found to coincide
 };
 
 // Pairs of free edges (each on one face only, not a seam, not degenerated) whose end
