@@ -1,5 +1,6 @@
-// libFuzzer target: STEP files through the isolated reader (isolated_reader.h) and the
-// whole shape pipeline (shape_fuzz_check.h). Each input is written to a fresh
+// libFuzzer target: STEP files through the isolated reader (isolated_reader.h, its
+// processes forked by reader_server.h) and the whole shape pipeline
+// (shape_fuzz_check.h). Each input is written to a fresh
 // temporary .step file, read as `tquad mesh` reads it, and removed.
 #include <STEPControl_Reader.hxx>
 #include <unistd.h>
@@ -11,6 +12,7 @@
 #include <string>
 
 #include "core/input_error.h"
+#include "reader_server.h"
 #include "shape_fuzz_check.h"
 
 namespace {
@@ -38,12 +40,16 @@ class TemporaryStepFile {
   std::string path_;
 };
 
+tquad::fuzz::ReaderServer* reader = nullptr;
+
 }  // namespace
 
-// STEP's reader sets up its schema tables on first use, in each child again unless
-// the parent has done it once before forking (ten times fewer runs per second).
+// STEP's reader sets up its schema tables on first use, in each reader again unless
+// the server has done it once before forking them (ten times fewer runs per second);
+// the server is forked while this process is small (reader_server.h).
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   STEPControl_Reader warm_up;
+  reader = new tquad::fuzz::ReaderServer(tquad::fuzz::fuzz_read_limits());
   return 0;
 }
 
@@ -51,7 +57,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const TemporaryStepFile file(data, size);
   tquad::ReadShape read;
   try {
-    read = tquad::read_shape_isolated(file.path(), tquad::fuzz::fuzz_read_limits());
+    read = reader->read_file(file.path());
   } catch (const tquad::InputError&) {
     return 0;
   }

@@ -107,9 +107,10 @@ bool write_all(int fd, const std::string& bytes) {
   _exit(write_all(fd, message) ? 0 : 3);
 }
 
-// Runs `read` in a child; `what` names the input in messages.
-ReadShape read_in_child(const std::function<TopoDS_Shape()>& read, const std::string& what,
-                        const ReadLimits& limits) {
+// Runs `read` in a child; `what` names the input in messages. Returns the child's
+// reply when it read a shape ('S' ...); throws what read_shape_isolated throws otherwise.
+std::string shape_reply_from_child(const std::function<TopoDS_Shape()>& read, const std::string& what,
+                                   const ReadLimits& limits) {
   int fds[2];
   if (pipe(fds) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
   const pid_t child = fork();
@@ -162,12 +163,31 @@ ReadShape read_in_child(const std::function<TopoDS_Shape()>& read, const std::st
     case 'M': throw InputError(what + ": reading it needs more than the memory limit (a damaged file?)");
     case 'C': throw InputError(what + " is damaged: OpenCASCADE could not read it");
     case 'F': throw std::runtime_error(payload.substr(1));  // not the file's fault
-    case 'S': break;
+    case 'S': return payload;
     default: throw std::logic_error("unexpected reply from the reader process");
   }
+}
+
+// The checks before a file is given to a reader process: InputError naming the file.
+void check_file_to_read(const std::string& path, const ReadLimits& limits) {
+  struct stat info {};
+  if (stat(path.c_str(), &info) != 0) throw InputError("cannot open '" + path + "'");
+  if (!S_ISREG(info.st_mode)) throw InputError("'" + path + "' is not a regular file");
+  if (static_cast<unsigned long long>(info.st_size) > limits.file_bytes) {
+    throw InputError("'" + path + "' is " + std::to_string(info.st_size) + " bytes, over the limit of " +
+                     std::to_string(limits.file_bytes));
+  }
+  if (info.st_size == 0 && is_shape_path(path)) throw InputError("'" + path + "' is empty");
+}
+
+}  // namespace
+
+ReadShape decode_shape_reply(const std::string& payload) {
   // "S<faces> <invalid count> <indices...>\n<binary BREP>"
   const std::size_t header_end = payload.find('\n');
-  if (header_end == std::string::npos) throw std::logic_error("the reader process's reply has no header");
+  if (payload.empty() || payload[0] != 'S' || header_end == std::string::npos) {
+    throw std::logic_error("the reader process's reply has no header");
+  }
   std::istringstream header(payload.substr(1, header_end - 1));
   int face_count = 0, invalid = 0;
   header >> face_count >> invalid;
@@ -182,23 +202,22 @@ ReadShape read_in_child(const std::function<TopoDS_Shape()>& read, const std::st
   return result;
 }
 
-}  // namespace
+std::string read_shape_reply(const std::string& path, const ReadLimits& limits) {
+  check_file_to_read(path, limits);
+  if (!is_shape_path(path)) read_shape(path);  // throws, naming the unknown format
+  return shape_reply_from_child([&] { return read_shape(path); }, "'" + path + "'", limits);
+}
+
+std::string read_brep_text_reply(const std::string& brep, const ReadLimits& limits) {
+  return shape_reply_from_child([&] { return read_brep_text(brep); }, "the BREP text", limits);
+}
 
 ReadShape read_shape_isolated(const std::string& path, const ReadLimits& limits) {
-  struct stat info {};
-  if (stat(path.c_str(), &info) != 0) throw InputError("cannot open '" + path + "'");
-  if (!S_ISREG(info.st_mode)) throw InputError("'" + path + "' is not a regular file");
-  if (static_cast<unsigned long long>(info.st_size) > limits.file_bytes) {
-    throw InputError("'" + path + "' is " + std::to_string(info.st_size) + " bytes, over the limit of " +
-                     std::to_string(limits.file_bytes));
-  }
-  if (info.st_size == 0 && is_shape_path(path)) throw InputError("'" + path + "' is empty");
-  if (!is_shape_path(path)) return {read_shape(path), {}};  // names the unknown format
-  return read_in_child([&] { return read_shape(path); }, "'" + path + "'", limits);
+  return decode_shape_reply(read_shape_reply(path, limits));
 }
 
 ReadShape read_brep_text_isolated(const std::string& brep, const ReadLimits& limits) {
-  return read_in_child([&] { return read_brep_text(brep); }, "the BREP text", limits);
+  return decode_shape_reply(read_brep_text_reply(brep, limits));
 }
 
 }  // namespace tquad
