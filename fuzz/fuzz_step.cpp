@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/input_error.h"
+#include "occ/descriptor_io.h"
 #include "reader_server.h"
 #include "shape_fuzz_check.h"
 
@@ -25,12 +26,7 @@ class TemporaryStepFile {
     const int fd = mkstemps(name, 5);
     if (fd < 0) std::abort();
     path_ = name;
-    std::size_t done = 0;
-    while (done < size) {
-      const ssize_t n = ::write(fd, data + done, size - done);
-      if (n <= 0) std::abort();
-      done += static_cast<std::size_t>(n);
-    }
+    if (!tquad::write_all(fd, reinterpret_cast<const char*>(data), size)) std::abort();
     close(fd);
   }
   ~TemporaryStepFile() { std::remove(path_.c_str()); }

@@ -19,7 +19,6 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
@@ -27,6 +26,7 @@
 #include <string>
 
 #include "core/input_error.h"
+#include "occ/descriptor_io.h"
 #include "occ/isolated_reader.h"
 
 namespace tquad::fuzz {
@@ -85,28 +85,6 @@ class ReaderServer {
     _exit(0);
   }
 
-  static bool write_all(int fd, const char* data, std::size_t size) {
-    while (size > 0) {
-      const ssize_t n = ::write(fd, data, size);
-      if (n < 0 && errno == EINTR) continue;  // libFuzzer's timer signal
-      if (n <= 0) return false;
-      data += n;
-      size -= static_cast<std::size_t>(n);
-    }
-    return true;
-  }
-
-  static bool read_all(int fd, char* data, std::size_t size) {
-    while (size > 0) {
-      const ssize_t n = ::read(fd, data, size);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) return false;
-      data += n;
-      size -= static_cast<std::size_t>(n);
-    }
-    return true;
-  }
-
   static bool send_message(int fd, char kind, const std::string& bytes) {
     const std::uint64_t size = bytes.size();
     return write_all(fd, &kind, 1) && write_all(fd, reinterpret_cast<const char*>(&size), sizeof size) &&
@@ -115,9 +93,9 @@ class ReaderServer {
 
   static bool receive_message(int fd, char& kind, std::string& bytes) {
     std::uint64_t size = 0;
-    if (!read_all(fd, &kind, 1) || !read_all(fd, reinterpret_cast<char*>(&size), sizeof size)) return false;
+    if (!read_exactly(fd, &kind, 1) || !read_exactly(fd, reinterpret_cast<char*>(&size), sizeof size)) return false;
     bytes.resize(size);
-    return read_all(fd, bytes.data(), size);
+    return read_exactly(fd, bytes.data(), size);
   }
 
   int socket_ = -1;

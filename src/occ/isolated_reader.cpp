@@ -22,6 +22,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
+#include "occ/descriptor_io.h"
 #include "occ/exchange_reader.h"
 #include "occ/shape_formats.h"
 #include "occ/shape_reader.h"
@@ -42,17 +43,6 @@ constexpr bool kLimitAddressSpace = true;
 #else
 constexpr bool kLimitAddressSpace = true;
 #endif
-
-bool write_all(int fd, const std::string& bytes) {
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
-}
 
 // The child: reads, and writes 'S' + binary BREP, or 'E' + message (the input's fault),
 // 'F' + message (the program's), 'M' (memory) or 'C' (a crash caught) to fd; never returns.
@@ -104,7 +94,7 @@ bool write_all(int fd, const std::string& bytes) {
   } catch (...) {
     message = "C";
   }
-  _exit(write_all(fd, message) ? 0 : 3);
+  _exit(write_all(fd, message.data(), message.size()) ? 0 : 3);
 }
 
 // Runs `read` in a child; `what` names the input in messages. Returns the child's
