@@ -139,6 +139,32 @@ class WorkbenchGuiTest(unittest.TestCase):
         panel.reject()
         self.assertEqual(mesh.FemMesh.FaceCount, before, "cancel re-meshes the old values")
 
+    def test_task_panel_tells_of_unsewn_faces_and_sews_them(self):
+        # A box's faces copied one by one share no edge (an IGES import of trimmed
+        # surfaces): the panel says the mesh is not connected, and its Sew box joins them.
+        from freecad.templatequad import make_mesh
+        from freecad.templatequad.task_panel import TemplateQuadTaskPanel
+
+        box = Part.makeBox(10, 20, 30)
+        part = self.doc.addObject("Part::Feature", "BoxFacesApart")
+        part.Shape = Part.Compound([face.copy() for face in box.Faces])
+        self.doc.recompute()
+        mesh = make_mesh(self.doc, part, size=5.0)
+        apart_nodes = mesh.FemMesh.NodeCount
+        panel = TemplateQuadTaskPanel(mesh)
+        self.assertFalse(panel.sew.isChecked(), "off by default")
+        self.assertIn("12 pair(s) of edges", panel.summary.text(), "the panel says so")
+        self.assertIn("turn on Sew", panel.summary.text())
+        panel.sew.setChecked(True)
+        self.assertTrue(panel.apply(), "apply re-meshes sewn")
+        self.assertTrue(mesh.Sew)
+        self.assertEqual(mesh.UnsewnEdges, 0)
+        self.assertLess(mesh.FemMesh.NodeCount, apart_nodes, "the faces share their edges' nodes")
+        self.assertNotIn("pair(s) of edges", panel.summary.text(), "nothing left to tell")
+        panel.reject()
+        self.assertFalse(mesh.Sew, "cancel restores the value")
+        self.assertEqual(mesh.FemMesh.NodeCount, apart_nodes, "and the mesh")
+
     def test_apply_then_ok_meshes_once(self):
         from freecad.templatequad import make_mesh
         from freecad.templatequad.task_panel import TemplateQuadTaskPanel

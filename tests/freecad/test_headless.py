@@ -224,11 +224,22 @@ class MeshObjectTest(unittest.TestCase):
         box = Part.makeBox(10, 20, 30)
         whole = make_mesh(self.doc, self._part(box, "WholeBox"), size=5.0)
         apart_part = self._part(Part.Compound([face.copy() for face in box.Faces]), "BoxFacesApart")
-        apart = make_mesh(self.doc, apart_part, size=5.0)
+        warnings = []
+        print_warning = FreeCAD.Console.PrintWarning
+        FreeCAD.Console.PrintWarning = lambda text: warnings.append(str(text))
+        try:
+            apart = make_mesh(self.doc, apart_part, size=5.0)
+        finally:
+            FreeCAD.Console.PrintWarning = print_warning
         self.assertFalse(apart.Sew, "sewing is off by default")
         self.assertGreater(apart.FemMesh.NodeCount, whole.FemMesh.NodeCount, "faces meshed apart")
+        self.assertEqual(whole.UnsewnEdges, 0)
+        self.assertEqual(apart.UnsewnEdges, 12, "each of the box's 12 edges is two edges apart")
+        self.assertTrue(any("BoxFacesApart: 12 pair(s) of edges" in w and "turn on Sew" in w
+                            for w in warnings), f"the report view says so: {warnings}")
         apart.Sew = True
         self.doc.recompute()
+        self.assertEqual(apart.UnsewnEdges, 0, "sewn: none left")
         self.assertEqual(apart.FemMesh.NodeCount, whole.FemMesh.NodeCount, "sewn: the box's nodes")
         self.assertEqual(apart.FemMesh.FaceCount, whole.FemMesh.FaceCount, "sewn: the box's quads")
         self._assert_same_as_tquad(apart, apart_part.Shape, 5.0, sew=True)

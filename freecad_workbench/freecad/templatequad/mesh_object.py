@@ -25,7 +25,7 @@ Gmsh mesh object, where they mean the same):
     T4Ratio                  (advanced) the k of the T4 template test
 Outputs (read-only, group "TemplateQuad results"):
     Quality (one summary line), ElementSizeUsed, ScaledJacobianMin and Mean,
-    QualityHistogram, Incomplete,
+    QualityHistogram, Incomplete, UnsewnEdges,
     RefusedFaceNames, RefusedFaces (with the reasons), TemplateTrees
 """
 import FreeCAD
@@ -91,6 +91,9 @@ _OUTPUTS = (
     ("App::PropertyIntegerList", "QualityHistogram",
      "Quads per scaled Jacobian band: below 0, then [0, 0.1) ... [0.9, 1]"),
     ("App::PropertyBool", "Incomplete", "Faces were refused: the mesh has holes there"),
+    ("App::PropertyInteger", "UnsewnEdges",
+     "Pairs of edges where faces touch without sharing the edge: the mesh is not "
+     "connected along them (Sew joins them)"),
     ("App::PropertyStringList", "RefusedFaceNames", "The refused faces (Face28, ...)"),
     ("App::PropertyStringList", "RefusedFaces", "Faces not meshed, with the reason"),
     ("App::PropertyStringList", "TemplateTrees", "Template tree of each meshed face"),
@@ -199,6 +202,7 @@ class TemplateQuadMesh(StatelessProxy):
         obj.RefusedFaces = meshing.refused_face_lines(mesh)
         obj.RefusedFaceNames = meshing.refused_face_names(mesh)
         obj.Incomplete = bool(mesh.refused_faces)
+        obj.UnsewnEdges = len(mesh.unsewn_edge_pairs)
         obj.Quality = meshing.quality_summary(mesh)
         obj.ScaledJacobianMin = float(mesh.quality["scaled_jacobian"]["min"])
         obj.ScaledJacobianMean = float(mesh.quality["scaled_jacobian"]["avg"])
@@ -209,6 +213,9 @@ class TemplateQuadMesh(StatelessProxy):
         for line in obj.RefusedFaces:
             FreeCAD.Console.PrintWarning(
                 f"TemplateQuad: {obj.Label}: {obj.Part.Label} {line} (not meshed)\n")
+        unsewn = meshing.unsewn_warning(obj.UnsewnEdges, obj.Sew)
+        if unsewn:
+            FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {unsewn}\n")
 
     def _remember_meshed_inputs(self, obj):
         """The inputs the current mesh was made with (restored by a cancelled re-mesh)."""
@@ -259,6 +266,7 @@ class TemplateQuadMesh(StatelessProxy):
         obj.RefusedFaces = []
         obj.RefusedFaceNames = []
         obj.Incomplete = False
+        obj.UnsewnEdges = 0
         obj.Quality = ""
         obj.QualityHistogram = []
         obj.ElementQuality = []

@@ -241,6 +241,17 @@ def quality_summary(mesh) -> str:
             f"inverted {q['inverted']}, degenerate {q['degenerate']}")
 
 
+def unsewn_warning(pairs: int, sew: bool) -> str:
+    """unsewn_warning(): what a user reads about edges where faces touch without sharing
+    the edge ("" for none): the mesh falls apart there, and a solver takes the pieces
+    as unconnected shells."""
+    if pairs == 0:
+        return ""
+    advice = "" if sew else "; turn on Sew to join them"
+    return (f"{pairs} pair(s) of edges lie on each other without being shared (the faces "
+            f"are not sewn there): the mesh is not connected along them{advice}")
+
+
 def template_tree_lines(mesh) -> List[str]:
     """template_tree_lines(): "FaceN: <tree> (<count> quads)" per meshed face."""
     return [f"Face{f['face'] + 1}: {f['template_tree']} ({f['quad_count']} quads)"

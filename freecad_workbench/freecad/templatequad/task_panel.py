@@ -17,14 +17,14 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui  # FreeCAD's shim: QtGui also holds the widgets
 
-from . import paths
+from . import meshing, paths
 from .mesh_object import ELEMENT_ORDERS
 from .quality_colours import histogram_band_colour
 from .view_provider import show_quality, showing_quality
 
 #: The properties the panel edits, in the order of _values().
 _INPUT_NAMES = ("CharacteristicLengthMax", "CharacteristicLengthMin", "ElementOrder",
-                "Smooth", "BestCorners", "Corners", "KeepGoing", "AcceptIncomplete",
+                "Smooth", "BestCorners", "Corners", "Sew", "KeepGoing", "AcceptIncomplete",
                 "T4Ratio")
 _CORNER_CHOICES = ("Automatic", "Best (slower)")
 
@@ -173,7 +173,7 @@ class TemplateQuadTaskPanel:
                    if line.strip()]
         return (self.max_size.value(), self.min_size.value(),
                 self.element_order.currentText(), self.smooth.isChecked(),
-                self.corner_choice.currentIndex() == 1, corners,
+                self.corner_choice.currentIndex() == 1, corners, self.sew.isChecked(),
                 self.keep_going.isChecked(), self.accept_incomplete.isChecked(),
                 self.t4_ratio.value())
 
@@ -184,7 +184,7 @@ class TemplateQuadTaskPanel:
                 setattr(self.obj, name, value)
 
     def _load(self, values):
-        (max_size, min_size, order, smooth, best, corners, keep_going, accept,
+        (max_size, min_size, order, smooth, best, corners, sew, keep_going, accept,
          t4_ratio) = values
         self.max_size.setValue(max_size)
         self.min_size.setValue(min_size)
@@ -192,6 +192,7 @@ class TemplateQuadTaskPanel:
         self.smooth.setChecked(smooth)
         self.corner_choice.setCurrentIndex(1 if best else 0)
         self.corners.setPlainText("\n".join(corners))
+        self.sew.setChecked(sew)
         self.keep_going.setChecked(keep_going)
         self.accept_incomplete.setChecked(accept)
         self.t4_ratio.setValue(t4_ratio)
@@ -210,6 +211,10 @@ class TemplateQuadTaskPanel:
             self.summary.setText(f"{o.FemMesh.QuadrangleCount} quads{faces}, element size "
                                  f"{used:.3g} mm; scaled Jacobian worst "
                                  f"{o.ScaledJacobianMin:.2f}, mean {o.ScaledJacobianMean:.2f}")
+        unsewn = meshing.unsewn_warning(o.UnsewnEdges, o.Sew) if not error else ""
+        if unsewn:
+            self.summary.setText(f"{self.summary.text()}<br><span style='color:#b60'>"
+                                 f"{unsewn[0].upper()}{unsewn[1:]}.</span>")
         self.refused_box.setVisible(bool(refused))
         if refused:
             self.refused_label.setText(
@@ -289,6 +294,10 @@ class TemplateQuadTaskPanel:
                         "press to add a line for that face")
         pick.clicked.connect(self.add_corners_from_selection)
         grid.addRow(pick)
+        self.sew = QtGui.QCheckBox("Sew faces first")
+        self.sew.setToolTip("Join faces that touch without sharing their edge (an IGES "
+                            "import of trimmed surfaces), so the mesh is connected there")
+        grid.addRow(self.sew)
         self.keep_going = QtGui.QCheckBox("Skip faces that fail")
         self.keep_going.setToolTip("Mesh the other faces when one cannot be meshed "
                                    "(the mesh is then incomplete)")
