@@ -214,7 +214,7 @@ class TemplateQuadTaskPanel:
         unsewn = meshing.unsewn_warning(o.UnsewnEdges, o.Sew) if not error else ""
         if unsewn:
             self.summary.setText(f"{self.summary.text()}<br><span style='color:#b60'>"
-                                 f"{unsewn[0].upper()}{unsewn[1:]}.</span>")
+                                 f"{unsewn}.</span>")
         self.refused_box.setVisible(bool(refused))
         if refused:
             self.refused_label.setText(
