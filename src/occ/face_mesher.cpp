@@ -310,18 +310,16 @@ std::optional<FaceMeshResult> mesh_polar_disk(const TopoDS_Face& face, const Fac
                                               const std::vector<Vec3>& nodes, const MeshOptions& options) {
   if (!boundary.polar) return std::nullopt;
   const auto start = std::chrono::steady_clock::now();
-  // The disk's O-grid wants a counter-clockwise loop: a clockwise one is mirrored
-  // (x -> -x) for building, and its nodes and quads mirrored back.
+  // The disk's O-grid wants a counter-clockwise loop: a clockwise one (a concave cap,
+  // its face reversed) is mirrored (x -> -x) for building and its nodes mirrored back,
+  // which turns its quads the loop's way, as the templates give them (take_quads).
   const bool mirror = twice_signed_area(boundary.uv) < 0;
   PlanarDomain disk;
   disk.loops.push_back(DomainLoop{boundary.uv, {}});
   if (mirror) for (Vec3& p : disk.loops[0].points) p.x = -p.x;
   std::optional<QuadMesh> mesh = mesh_disk_o_grid(disk, options);
   if (!mesh) return std::nullopt;
-  if (mirror) {
-    for (Vec3& p : mesh->nodes) p.x = -p.x;
-    for (Quad& q : mesh->quads) std::swap(q[1], q[3]);
-  }
+  if (mirror) for (Vec3& p : mesh->nodes) p.x = -p.x;
   for (std::size_t i = 0; i < boundary.uv.size(); ++i) mesh->nodes[i] = boundary.uv[i];  // bit-exact
   return place_parameter_mesh(face, boundary, nodes, std::move(*mesh), start);
 }

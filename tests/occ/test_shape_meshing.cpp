@@ -311,6 +311,42 @@ TEST(ShapeMeshing, SharpConeTipsAreMetByTwoQuads) {
   }
 }
 
+TEST(ShapeMeshing, SphereCapsGetTheDiskOGridConvexOrConcave) {
+  // Caps of a sphere of radius 10 from latitude `from` to its pole, closed by a disk:
+  // short of, at and past the equator. Reversed, the same solid is a cavity, its
+  // faces reversed: the cap is concave, as a spherical dimple or seat cut into a part.
+  // Both ways the cap is the disk's O-grid around its pole (pole_rims.h), every rim
+  // node in two quads. The concave caps' O-grid came out inverted (mirrored twice)
+  // and lost to two curves with corners on the rim, whose quads along a rim at the
+  // equator have three rim nodes in one tangent plane: degenerate, or inverted past it.
+  for (const double degrees : {30.0, 0.0, -30.0}) {
+    for (const bool concave : {false, true}) {
+      SCOPED_TRACE(std::to_string(degrees) + (concave ? " degrees, concave" : " degrees, convex"));
+      TopoDS_Shape cap = BRepPrimAPI_MakeSphere(10.0, degrees * M_PI / 180, M_PI / 2).Shape();
+      if (concave) cap.Reverse();
+      const FileReport r = check_primitive(cap, "sphere_cap");
+      EXPECT_EQ(r.refused, 0);
+      EXPECT_TRUE(r.closed);
+      ShapeMeshOptions options;
+      options.size = 2.0;
+      const ShapeMeshResult result = mesh_shape(cap, options);
+      const ShapeIndex index(cap);
+      ASSERT_EQ(result.mesh.scaled_jacobian.size(), result.mesh.quads.size());
+      for (const FaceMesh& f : result.mesh.faces) {
+        if (BRepAdaptor_Surface(index.face(f.face)).GetType() != GeomAbs_Sphere) continue;
+        EXPECT_EQ(f.template_tree.substr(0, 2), "O5") << f.template_tree;
+        double worst = 1.0;
+        for (std::int64_t k = f.first_quad; k < f.first_quad + f.quad_count; ++k) {
+          worst = std::min(worst, result.mesh.scaled_jacobian[k]);
+        }
+        std::printf("[ quality  ] sphere cap from %5.1f deg, %s: %s, worst scaled Jacobian %.3f\n", degrees,
+                    concave ? "concave" : "convex ", f.template_tree.substr(0, 2).c_str(), worst);
+        EXPECT_GT(worst, 0.5);
+      }
+    }
+  }
+}
+
 // A quarter ring between radii 9.2 and 10.5 around the z axis, meshed alone at size
 // 1.2; `split_outer`: the outer arc in two edges at 45 degrees, else the end on the x
 // axis in two edges at its middle. The face has five edges either way, so no chain
