@@ -175,6 +175,18 @@ void raise_three_edge_face_floors(const ShapeIndex& index, const std::vector<cha
   }
 }
 
+void raise_two_edge_loop_floors(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& floor) {
+  for (int f = 0; f < index.face_count(); ++f) {
+    if (!meshed[f]) continue;
+    for (const std::vector<int>& wire : face_wires_with_poles(index, f)) {
+      std::vector<int> edges;
+      for (int e : wire) if (e != kPoleEdge) edges.push_back(e);
+      if (edges.size() != 2 || edges[0] == edges[1]) continue;  // a seam is in its wire twice
+      for (int e : edges) floor[e] = std::max(floor[e], 2);
+    }
+  }
+}
+
 IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector<char>& meshed,
                                       const std::vector<double>& lengths, double size, std::vector<int>& segments,
                                       const std::vector<int>& floor, FaceWireEdges& wires,

@@ -242,6 +242,7 @@ class ShapeMeshContext {
     for (const auto& [f, why] : damaged_) if (f >= 0 && f < index_.face_count()) to_mesh_[f] = 0;
     edge_floor_ = edge_turn_minimums(index_, usable);
     raise_three_edge_face_floors(index_, to_mesh_, edge_floor_);
+    raise_two_edge_loop_floors(index_, to_mesh_, edge_floor_);
     sized_ = edge_segment_counts(index_, result_.size, edge_floor_, lengths_, usable);
     spacings_.cusp_ends = cusp_ends(index_, result_.size, lengths_);
     needed_.assign(index_.edge_count(), 0);

@@ -13,6 +13,7 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
+#include <GC_MakeArcOfCircle.hxx>
 #include <TopExp.hxx>
 #include <TopTools_MapOfShape.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
@@ -345,6 +346,50 @@ TEST(ShapeMeshing, SphereCapsGetTheDiskOGridConvexOrConcave) {
       }
     }
   }
+}
+
+// A lens of two shallow arcs from (x, 0, 0) to (x + 1.2, 0, 0), bulging 0.05 each way:
+// the sliver a boolean leaves between two overlapping holes, or a hole and a fillet.
+TopoDS_Wire lens_wire(double x) {
+  const gp_Pnt a(x, 0, 0), b(x + 1.2, 0, 0);
+  BRepBuilderAPI_MakeWire wire;
+  wire.Add(BRepBuilderAPI_MakeEdge(GC_MakeArcOfCircle(a, gp_Pnt(x + 0.6, -0.05, 0), b).Value()).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(GC_MakeArcOfCircle(b, gp_Pnt(x + 0.6, 0.05, 0), a).Value()).Edge());
+  return wire.Wire();
+}
+
+TEST(ShapeMeshing, LoopsOfTwoShortEdgesGetFourSegments) {
+  // At a size twice the lens's length each arc would be one segment, and a loop of
+  // two cannot be meshed: both edges of a two-edge loop get two at least.
+  ShapeMeshOptions options;
+  options.size = 2.4;
+  const ShapeMeshResult lens = mesh_shape(BRepBuilderAPI_MakeFace(lens_wire(0.0)).Face(), options);
+  EXPECT_TRUE(lens.mesh.refused_faces.empty());
+  EXPECT_EQ(lens.mesh.quads.size(), 1u);
+  // The same lens as a hole in a plate 10 across.
+  BRepBuilderAPI_MakeFace plate(BRepBuilderAPI_MakePolygon(gp_Pnt(-5, -5, 0), gp_Pnt(5, -5, 0), gp_Pnt(5, 5, 0),
+                                                           gp_Pnt(-5, 5, 0), true).Wire());
+  TopoDS_Wire hole = lens_wire(-0.6);
+  hole.Reverse();
+  plate.Add(hole);
+  const ShapeMeshResult holed = mesh_shape(plate.Face(), options);
+  EXPECT_TRUE(holed.mesh.refused_faces.empty());
+  EXPECT_EQ(holed.inverted, 0);
+  // The hole has 4 segments, and nodes = 1 + quads + boundary_edges / 2 - holes.
+  std::map<std::pair<NodeId, NodeId>, int> uses;
+  for (const Quad& q : holed.mesh.quads) {
+    for (int i = 0; i < 4; ++i) ++uses[std::minmax(q[i], q[(i + 1) % 4])];
+  }
+  long long boundary = 0, on_hole = 0;
+  const auto near_hole = [&](NodeId n) { return norm(holed.mesh.nodes[n]) < 0.61; };
+  for (const auto& [edge, count] : uses) {
+    if (count != 1) continue;
+    ++boundary;
+    if (near_hole(edge.first) && near_hole(edge.second)) ++on_hole;
+  }
+  EXPECT_EQ(on_hole, 4);
+  EXPECT_EQ(static_cast<long long>(holed.mesh.nodes.size()),
+            1 + static_cast<long long>(holed.mesh.quads.size()) + boundary / 2 - 1);
 }
 
 // A quarter ring between radii 9.2 and 10.5 around the z axis, meshed alone at size
