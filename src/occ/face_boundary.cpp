@@ -297,7 +297,12 @@ FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::v
     if (w.Current().IsSame(outer)) continue;
     ++b.inner_wires;
     const WireWalk hole = walk_wire(TopoDS::Wire(w.Current()), face, face_index, index, edges);
-    b.holes.push_back({hole.nodes, hole.uv});
+    NodeLoop loop{hole.nodes, hole.uv, {}, {}};
+    for (const WireWalk::Occurrence& o : hole.occurrences) {
+      loop.edge_start.push_back(o.start);
+      loop.edge_index.push_back(index.edge_index(o.edge));
+    }
+    b.holes.push_back(std::move(loop));
   }
   const WireWalk walk = walk_wire(outer, face, face_index, index, edges);
   if (walk.nodes.empty()) {

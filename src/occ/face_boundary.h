@@ -30,6 +30,8 @@ struct PolarMap {
 struct NodeLoop {
   std::vector<NodeId> nodes;
   std::vector<Vec3> uv;
+  std::vector<int> edge_start;  // loop position where each wire edge begins
+  std::vector<int> edge_index;  // shape edge index of each wire edge
 };
 
 struct FaceBoundary {

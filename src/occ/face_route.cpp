@@ -15,6 +15,7 @@
 #include "core/input_error.h"
 #include "core/mesher.h"
 #include "core/quality.h"
+#include "occ/crossing_chords.h"
 #include "occ/face_corners.h"
 #include "occ/face_decomposed.h"
 #include "occ/surface_smoothing.h"
@@ -341,6 +342,10 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
     outcome.code = refusal_code_of(e);
     const auto* inverted = dynamic_cast<const InvertedQuadsError*>(&e);
     outcome.finer_edges_may_help = inverted && inverted->quads <= kRefinableQuads;
+    if (!outcome.finer_edges_may_help) {
+      outcome.refine_edges = edges_of_crossing_chords(index, f, outcome.boundary);
+      outcome.finer_edges_may_help = !outcome.refine_edges.empty();
+    }
   } catch (const std::bad_alloc&) {
     outcome.reason = std::string("face ") + std::to_string(f) + ": internal failure: out of memory";
     outcome.code = RefusalCode::internal;

@@ -17,8 +17,11 @@ namespace tquad {
 
 struct FaceOutcome {
   bool ok = false;
-  // Refused for quads that stay inverted on a small mesh: finer edges may help.
+  // Refused for quads that stay inverted on a small mesh, or for a boundary whose
+  // chords cross (crossing_chords.h): finer edges may help, on `refine_edges` (the
+  // crossing curves), or on all the face's edges when that is empty.
   bool finer_edges_may_help = false;
+  std::vector<int> refine_edges;
   // Why it was refused; RefusalCode::internal is a failure of the mesher itself (a
   // broken invariant, out of memory), not of the input: exit 1, not 2, when it stops
   // the job.

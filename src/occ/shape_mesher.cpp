@@ -173,9 +173,11 @@ class ShapeMeshContext {
 
   ShapeMeshResult run() {
     stage("index", [&] { index_faces(); });
-    // Small faces whose quads stay inverted get their edges' counts doubled and the
-    // shape is meshed again (at most kRefinements times: doubling one face's edges
-    // changes its neighbours' counts, which may need their own round).
+    // Small faces whose quads stay inverted get their edges' counts doubled, and
+    // refused faces whose boundary crosses itself only by its chords their crossing
+    // curves' (crossing_chords.h); then the shape is meshed again (at most
+    // kRefinements times: doubling one face's edges changes its neighbours' counts,
+    // which may need their own round).
     constexpr int kRefinements = 4;
     for (int round = 0;; ++round) {
       stage("assign intervals", [&] { assign_intervals(); });
@@ -363,6 +365,9 @@ class ShapeMeshContext {
     for (int f = 0; f < index_.face_count(); ++f) {
       if (!meshed_[f] || !outcomes_[f].finer_edges_may_help) continue;
       refine = true;
+      const std::vector<int>& only = outcomes_[f].refine_edges;
+      for (int e : only) minimum_[e] = std::max(minimum_[e], 2 * segments_[e]);
+      if (!only.empty()) continue;
       for (TopExp_Explorer it(index_.face(f), TopAbs_EDGE); it.More(); it.Next()) {
         const int e = index_.edge_index(it.Current());
         minimum_[e] = std::max(minimum_[e], 2 * segments_[e]);

@@ -392,6 +392,41 @@ TEST(ShapeMeshing, LoopsOfTwoShortEdgesGetFourSegments) {
             1 + static_cast<long long>(holed.mesh.quads.size()) + boundary / 2 - 1);
 }
 
+TEST(ShapeMeshing, ChordsThatCrossAnotherEdgeAreRefined) {
+  // A disk of radius 10 with a notch cut almost to its top: the notch's side x = 0
+  // ends 0.05 under the arc, whose chords at size 3.6 (12 over 258 degrees) cut 0.17
+  // inside it. The loop of segments crossed itself there and the face was refused;
+  // the arc is refined (doubled) until its chords clear the notch.
+  const gp_Circ circle(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 10.0);
+  const gp_Pnt top(std::sqrt(100.0 - 9.95 * 9.95), 9.95, 0), right(std::sqrt(91.0), -3, 0);
+  BRepBuilderAPI_MakeWire wire;
+  wire.Add(BRepBuilderAPI_MakeEdge(GC_MakeArcOfCircle(circle, top, right, true).Value()).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(right, gp_Pnt(0, -3, 0)).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0, -3, 0), gp_Pnt(0, 9.95, 0)).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 9.95, 0), top).Edge());
+  ASSERT_TRUE(wire.IsDone());
+  ShapeMeshOptions options;
+  options.size = 3.6;
+  const ShapeMeshResult result = mesh_shape(BRepBuilderAPI_MakeFace(wire.Wire()).Face(), options);
+  EXPECT_TRUE(result.mesh.refused_faces.empty());
+  EXPECT_EQ(result.inverted, 0);
+  EXPECT_GE(result.refinement_rounds, 1);
+  // Only the arc was refined: the three lines keep their counts from the size.
+  std::map<std::pair<NodeId, NodeId>, int> uses;
+  for (const Quad& q : result.mesh.quads) {
+    for (int i = 0; i < 4; ++i) ++uses[std::minmax(q[i], q[(i + 1) % 4])];
+  }
+  int on_arc = 0, on_lines = 0;
+  for (const auto& [edge, count] : uses) {
+    if (count != 1) continue;
+    const Vec3 &a = result.mesh.nodes[edge.first], &b = result.mesh.nodes[edge.second];
+    const bool arc = std::abs(norm(a) - 10) < 1e-6 && std::abs(norm(b) - 10) < 1e-6;
+    ++(arc ? on_arc : on_lines);
+  }
+  EXPECT_GE(on_arc, 24);
+  EXPECT_LE(on_lines, 4 + 4 + 1 + 1);  // 12.9 / 3.6, 9.5 / 3.6 and the short line, made even
+}
+
 // A quarter ring between radii 9.2 and 10.5 around the z axis, meshed alone at size
 // 1.2; `split_outer`: the outer arc in two edges at 45 degrees, else the end on the x
 // axis in two edges at its middle. The face has five edges either way, so no chain

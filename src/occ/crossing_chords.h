@@ -1,0 +1,27 @@
+// edges_of_crossing_chords: where a face's discretized boundary crosses itself only
+// because its segments are chords of curves coarser than the gap between them.
+//
+// A curved edge's chords cut inside its curve by their sagitta. Where another edge
+// passes within that of it (a notch cut almost to an arc's top, a hole near a
+// fillet), the loop of segments crosses itself although the face's edges do not,
+// and every route refuses the face ("the boundary crosses or touches itself"). Finer
+// segments on the curved edge cure it: on a generated part a notch came within 0.07
+// of an arc of radius 9.6 cut in 11 segments (sagitta 0.2), and 22 clear it. Two
+// lines on a plane are their own chords: a crossing of theirs is the face's own and
+// no count cures it.
+#pragma once
+
+#include <vector>
+
+#include "occ/face_boundary.h"
+#include "occ/shape_index.h"
+
+namespace tquad {
+
+// The shape edges of the first pair of the boundary's segments (its outer loop and
+// holes, in (u, v)) that cross or touch, when one of the two edges at least is not a
+// line on a plane; empty when no segments cross, when they are lines on a plane, or
+// when the boundary is not a plain (u, v) loop (a pole, polar coordinates).
+std::vector<int> edges_of_crossing_chords(const ShapeIndex& index, int face, const FaceBoundary& boundary);
+
+}  // namespace tquad
