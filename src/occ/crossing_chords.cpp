@@ -1,11 +1,9 @@
 #include "occ/crossing_chords.h"
 
-#include <BRepAdaptor_Curve.hxx>
-#include <BRepAdaptor_Surface.hxx>
-
 #include <algorithm>
 
 #include "core/planar_self_intersection.h"
+#include "occ/edge_discretization.h"
 
 namespace tquad {
 
@@ -48,8 +46,7 @@ std::vector<int> edges_of_crossing_chords(const ShapeIndex& index, int face, con
   if (!crossing) return {};
   const int a = edge_of[crossing->first], b_edge = edge_of[crossing->second];
   if (a < 0 || b_edge < 0) return {};
-  const bool plane = BRepAdaptor_Surface(index.face(face), false).GetType() == GeomAbs_Plane;
-  const auto straight = [&](int e) { return plane && BRepAdaptor_Curve(index.edge(e)).GetType() == GeomAbs_Line; };
+  const auto straight = [&](int e) { return is_line_on_plane(index, face, e); };
   if (straight(a) && straight(b_edge)) return {};
   std::vector<int> curved;
   for (int e : {a, b_edge}) {

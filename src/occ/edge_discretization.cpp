@@ -1,6 +1,7 @@
 #include "occ/edge_discretization.h"
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
 #include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GCPnts_UniformAbscissa.hxx>
@@ -261,6 +262,11 @@ std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vect
     out.nodes.push_back(index.vertex_index(last));
   }
   return result;
+}
+
+bool is_line_on_plane(const ShapeIndex& index, int f, int e) {
+  return BRepAdaptor_Curve(index.edge(e)).GetType() == GeomAbs_Line &&
+         BRepAdaptor_Surface(index.face(f), false).GetType() == GeomAbs_Plane;
 }
 
 }  // namespace tquad

@@ -34,6 +34,10 @@ std::map<int, std::string> unusable_edges(const ShapeIndex& index, const Box3& b
 // `usable`: per edge, or empty for all; the others get 0.
 std::vector<int> edge_turn_minimums(const ShapeIndex& index, const std::vector<char>& usable = {});
 
+// Whether shape edge `e` is a line on face `f`'s plane: its segments are the edge
+// itself, in space and in the face's (u, v) alike, whatever their count.
+bool is_line_on_plane(const ShapeIndex& index, int f, int e);
+
 // Segments of each edge from the target size: round(length / size), at least 1 and
 // at least one per 45 degrees of the curve's turning; degenerate edges get 0.
 std::vector<int> edge_segment_counts(const ShapeIndex& index, double size,

@@ -182,7 +182,11 @@ void raise_two_edge_loop_floors(const ShapeIndex& index, const std::vector<char>
       std::vector<int> edges;
       for (int e : wire) if (e != kPoleEdge) edges.push_back(e);
       if (edges.size() != 2 || edges[0] == edges[1]) continue;  // a seam is in its wire twice
-      for (int e : edges) floor[e] = std::max(floor[e], 2);
+      const bool straight[2] = {is_line_on_plane(index, f, edges[0]), is_line_on_plane(index, f, edges[1])};
+      for (int k = 0; k < 2; ++k) {
+        if (straight[k]) continue;  // a line keeps its own floor (1)
+        floor[edges[k]] = std::max(floor[edges[k]], straight[1 - k] ? 3 : 2);
+      }
     }
   }
 }

@@ -55,12 +55,14 @@ int face_boundary_total(const ShapeIndex& index, int face, const std::vector<int
 // Jacobian 0.38); with 2, 4, 2 it is a 2 x 2 grid.
 void raise_three_edge_face_floors(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& floor);
 
-// Raises `floor` to 2 on both edges of every loop (outer or hole) of a meshed face
-// made of two edges (poles aside), so the loop has 4 segments or more. Two shallow
-// arcs, as a boolean leaves between two overlapping holes or a hole and a fillet,
-// are otherwise one segment each at a size larger than them, and a face (or hole)
-// of 2 segments cannot be meshed: such a lens, 1.2 long at size 2.4 on a generated
-// part, was refused.
+// Raises `floor` on both edges of every loop (outer or hole) of a meshed face made
+// of two edges (poles aside), so the loop has 4 segments or more: two curves get 2
+// each, a curve closed by a line (a D) 3 and the line 1, so that no corner of the
+// loop's quad lies in the middle of the line (180 degrees: a D of 2 and 2 was one
+// degenerate quad). Two shallow arcs, as a boolean leaves between two overlapping
+// holes or a hole and a fillet, are otherwise one segment each at a size larger than
+// them, and a face (or hole) of 2 segments cannot be meshed: such a lens, 1.2 long at
+// size 2.4 on a generated part, was refused.
 void raise_two_edge_loop_floors(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& floor);
 
 // The whole shape's edge counts chosen together: opposite edges of every face bounded

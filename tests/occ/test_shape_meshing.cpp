@@ -366,6 +366,16 @@ TEST(ShapeMeshing, LoopsOfTwoShortEdgesGetFourSegments) {
   const ShapeMeshResult lens = mesh_shape(BRepBuilderAPI_MakeFace(lens_wire(0.0)).Face(), options);
   EXPECT_TRUE(lens.mesh.refused_faces.empty());
   EXPECT_EQ(lens.mesh.quads.size(), 1u);
+  // A D: a shallow arc closed by a line. The arc gets 3 and the line 1, so no
+  // corner of the quad is the line's middle (180 degrees: 2 and 2 gave that).
+  BRepBuilderAPI_MakeWire d;
+  d.Add(BRepBuilderAPI_MakeEdge(GC_MakeArcOfCircle(gp_Pnt(0, 0, 0), gp_Pnt(0.6, 0.1, 0), gp_Pnt(1.2, 0, 0)).Value()).Edge());
+  d.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(1.2, 0, 0), gp_Pnt(0, 0, 0)).Edge());
+  const ShapeMeshResult d_mesh = mesh_shape(BRepBuilderAPI_MakeFace(d.Wire()).Face(), options);
+  ASSERT_EQ(d_mesh.mesh.quads.size(), 1u);
+  ASSERT_EQ(d_mesh.mesh.scaled_jacobian.size(), 1u);
+  EXPECT_GT(d_mesh.mesh.scaled_jacobian[0], 0.05);
+  for (NodeId n : d_mesh.mesh.quads[0]) EXPECT_GT(distance(d_mesh.mesh.nodes[n], Vec3{0.6, 0, 0}), 0.05) << n;
   // The same lens as a hole in a plate 10 across.
   BRepBuilderAPI_MakeFace plate(BRepBuilderAPI_MakePolygon(gp_Pnt(-5, -5, 0), gp_Pnt(5, -5, 0), gp_Pnt(5, 5, 0),
                                                            gp_Pnt(-5, 5, 0), true).Wire());
