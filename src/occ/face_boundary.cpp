@@ -193,39 +193,109 @@ std::optional<PoleSector> pole_sector(const FaceBoundary& b, const TopoDS_Face& 
   return sector;
 }
 
+namespace {
+
+// The outer wire's edge occurrences other than its seams, joined into closed loops
+// (occurrence indices): each continues with the occurrence that starts at the node
+// where it ends, the next in the wire's order first. Around a plain disk that is one
+// loop, the rim; where the seam passes through a hole, the wire runs rim, seam,
+// hole, seam, and without the seam the hole closes on its own. Empty when the
+// occurrences do not close.
+std::vector<std::vector<int>> loops_without_seams(const FaceBoundary& b) {
+  const int edges = static_cast<int>(b.edge_start.size());
+  const int n = static_cast<int>(b.nodes.size());
+  std::vector<int> kept;
+  for (int k = 0; k < edges; ++k) if (!b.is_seam[k]) kept.push_back(k);
+  const auto start = [&](int k) { return b.nodes[b.edge_start[k]]; };
+  const auto end = [&](int k) { return b.nodes[(k + 1 < edges ? b.edge_start[k + 1] : n) % n]; };
+  const int count = static_cast<int>(kept.size());
+  std::vector<char> used(count, 0);
+  std::vector<std::vector<int>> loops;
+  for (int s = 0; s < count; ++s) {
+    if (used[s]) continue;
+    std::vector<int> loop{s};
+    used[s] = 1;
+    while (end(kept[loop.back()]) != start(kept[s])) {
+      int next = -1;
+      for (int d = 1; d < count && next < 0; ++d) {
+        const int j = (loop.back() + d) % count;
+        if (!used[j] && start(kept[j]) == end(kept[loop.back()])) next = j;
+      }
+      if (next < 0) return {};
+      used[next] = 1;
+      loop.push_back(next);
+    }
+    for (int& i : loop) i = kept[i];
+    loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+}  // namespace
+
 FaceBoundary around_pole(const FaceBoundary& b, const TopoDS_Face& face, int face_index,
                          const std::vector<Vec3>& nodes) {
   const BRepAdaptor_Surface surface(face);
+  const std::string name = "face " + std::to_string(face_index);
   if (!surface.IsUPeriodic()) {
-    throw FaceRefusalError(RefusalCode::not_supported, "face " + std::to_string(face_index) +
-                                                           " has a seam and a pole but is not periodic in u; not supported yet");
+    throw FaceRefusalError(RefusalCode::not_supported, name + " has a seam and a pole but is not periodic in u; not supported yet");
+  }
+  if (std::find(b.is_seam.begin(), b.is_seam.end(), 0) == b.is_seam.end()) {
+    throw FaceRefusalError(RefusalCode::not_supported, name + " has no edge besides its seam and pole");
+  }
+  const std::vector<std::vector<int>> loops = loops_without_seams(b);
+  if (loops.empty()) {
+    throw FaceRefusalError(RefusalCode::not_supported, name + ": its outer wire without its seam does not close");
+  }
+  // Each loop's nodes, (u, v) and edges, walked as in the wire.
+  const int n = static_cast<int>(b.nodes.size());
+  std::vector<NodeLoop> walked;
+  std::vector<Vec3> all_uv;
+  for (const std::vector<int>& loop : loops) {
+    NodeLoop& w = walked.emplace_back();
+    for (int k : loop) {
+      const int first = b.edge_start[k];
+      const int last = k + 1 < static_cast<int>(b.edge_start.size()) ? b.edge_start[k + 1] : n;
+      w.edge_start.push_back(static_cast<int>(w.nodes.size()));
+      w.edge_index.push_back(b.edge_index[k]);
+      for (int i = first; i < last; ++i) {
+        w.nodes.push_back(b.nodes[i]);
+        w.uv.push_back(b.uv[i]);
+        all_uv.push_back(b.uv[i]);
+      }
+    }
+  }
+  const PolarMap m = polar_map_around(all_uv, b.pole_v, surface.UPeriod());
+  for (NodeLoop& w : walked) {
+    for (Vec3& p : w.uv) p = uv_to_polar(m, p);
+  }
+  // The outer loop encloses the most; the others are holes the seam went through.
+  std::size_t outer = 0;
+  for (std::size_t i = 1; i < walked.size(); ++i) {
+    if (std::abs(twice_signed_area(walked[i].uv)) > std::abs(twice_signed_area(walked[outer].uv))) outer = i;
   }
   FaceBoundary out;
   out.has_degenerate_edge = true;
-  out.inner_wires = b.inner_wires;
-  const int edges = static_cast<int>(b.edge_start.size());
-  std::vector<Vec3> uv;
-  for (int k = 0; k < edges; ++k) {
-    if (b.is_seam[k]) continue;
-    const int first = b.edge_start[k];
-    const int last = k + 1 < edges ? b.edge_start[k + 1] : static_cast<int>(b.nodes.size());
-    out.edge_start.push_back(static_cast<int>(out.nodes.size()));
+  out.inner_wires = b.inner_wires + static_cast<int>(walked.size()) - 1;
+  out.nodes = walked[outer].nodes;
+  out.uv = walked[outer].uv;
+  out.edge_start = walked[outer].edge_start;
+  out.edge_index = walked[outer].edge_index;
+  for (int k : loops[outer]) {
     out.start_vertex.push_back(b.start_vertex[k]);
     out.is_seam.push_back(0);
     out.turn.push_back(b.turn[k]);
-    for (int i = first; i < last; ++i) {
-      out.nodes.push_back(b.nodes[i]);
-      uv.push_back(b.uv[i]);
-    }
   }
-  if (out.nodes.size() < 2) {
-    throw FaceRefusalError(RefusalCode::not_supported,
-                           "face " + std::to_string(face_index) + " has no edge besides its seam and pole");
-  }
-  const PolarMap m = polar_map_around(uv, b.pole_v, surface.UPeriod());
-  for (const Vec3& p : uv) out.uv.push_back(uv_to_polar(m, p));
   out.polar = m;
   out.arc_length = loop_arc_lengths(out.nodes, nodes);  // for the corner choice
+  out.holes = b.holes;
+  for (NodeLoop& hole : out.holes) {
+    for (Vec3& p : hole.uv) p = uv_to_polar(m, p);
+  }
+  for (std::size_t i = 0; i < walked.size(); ++i) {
+    if (i != outer) out.holes.push_back(std::move(walked[i]));
+  }
+  out.smooth_pole = face_pole_angle(face) >= kSmoothPoleAngle;
   return out;
 }
 

@@ -47,8 +47,16 @@ struct FaceBoundary {
   std::vector<NodeLoop> holes;      // the inner wires, each walked like the outer one
   bool has_degenerate_edge = false;
   double pole_v = 0;                // v of the (first) degenerate edge, if any
-  std::optional<PolarMap> polar;    // set by around_pole: uv then holds polar (x, y)
+  std::optional<PolarMap> polar;    // set by around_pole: uv (holes' too) then hold polar (x, y)
+  // Polar: the surface turns a full turn around its pole (kSmoothPoleAngle: a sphere's
+  // pole, not a cone's tip), so the pole is an ordinary point of the face, which may
+  // be decomposed and meshed in polar (x, y) with no node there.
+  bool smooth_pole = false;
 };
+
+// Around a pole where the surface turns by this or more it is smooth: a sphere's pole
+// turns 2 pi, a cone's tip 2 pi sin(half-angle), under this below 78.5 degrees.
+constexpr double kSmoothPoleAngle = 0.98 * 2 * M_PI;
 
 // Signed area of a (u, v) loop (positive: counter-clockwise).
 double signed_uv_area(const std::vector<Vec3>& uv);

@@ -23,11 +23,14 @@ namespace tquad {
 namespace {
 
 
-// (u, v) <-> chart: x = mirror * su * u, y = sv * v.
+// The face's own coordinates (its (u, v), or polar (x, y) around a smooth pole:
+// FaceBoundary::polar) <-> chart: x = mirror * su * p.x, y = sv * p.y.
 struct Chart {
   double su = 1, sv = 1, mirror = 1;
-  Vec3 to_chart(const Vec3& uv) const { return {mirror * su * uv.x, sv * uv.y, 0.0}; }
-  Vec3 to_uv(const Vec3& xy) const { return {xy.x / (mirror * su), xy.y / sv, 0.0}; }
+  std::optional<PolarMap> polar;
+  Vec3 to_chart(const Vec3& p) const { return {mirror * su * p.x, sv * p.y, 0.0}; }
+  Vec3 to_own(const Vec3& xy) const { return {xy.x / (mirror * su), xy.y / sv, 0.0}; }
+  Vec3 surface_uv(const Vec3& own) const { return polar ? polar_to_uv(*polar, own) : own; }
 };
 
 // Mean |S_u| and |S_v| on a 5 x 5 grid over the loop's (u, v) box.
@@ -56,13 +59,27 @@ Chart chart_for(const BRepAdaptor_Surface& surface, const std::vector<Vec3>& uv)
   return c;
 }
 
+// Polar (x, y) around a smooth pole scaled alike in x and y by the loop's length in
+// space over its length in (x, y): near a sphere's pole the map is its azimuthal
+// equidistant projection, lengths kept along radii and shortened across them by at
+// most 2 / pi at the equator.
+Chart polar_chart(const FaceBoundary& b) {
+  double along = 0;
+  for (std::size_t i = 0; i < b.uv.size(); ++i) along += distance(b.uv[i], b.uv[(i + 1) % b.uv.size()]);
+  Chart c;
+  c.polar = b.polar;
+  c.su = c.sv = along > 0 && b.arc_length.size() == b.uv.size() + 1 ? b.arc_length.back() / along : 1.0;
+  if (!(c.su > 0) || !std::isfinite(c.su)) c.su = c.sv = 1;
+  return c;
+}
+
 // A face's domain in its chart, with the shared node and (u, v) of each domain point.
 class FaceChart {
  public:
   FaceChart(const TopoDS_Face& face, int face_index, const FaceBoundary& b, const std::vector<Vec3>& nodes,
             int vertex_nodes)
       : face_(face), name_("face " + std::to_string(face_index)), b_(b), nodes_(nodes), surface_(face) {
-    if (b.has_degenerate_edge || b.polar) throw InputError(name_ + " has a pole; it is not decomposed");
+    if (b.polar ? !b.smooth_pole : b.has_degenerate_edge) throw InputError(name_ + " has a pole; it is not decomposed");
     if (b.uv.size() < 3 || b.uv.size() != b.nodes.size()) {
       throw FaceRefusalError(RefusalCode::too_coarse, name_ + " has only " + std::to_string(b.nodes.size()) + " boundary segments");
     }
@@ -71,7 +88,7 @@ class FaceChart {
         throw FaceRefusalError(RefusalCode::too_coarse, name_ + " has a hole of only " + std::to_string(hole.nodes.size()) + " segments");
       }
     }
-    chart_ = chart_for(surface_, b.uv);
+    chart_ = b.polar ? polar_chart(b) : chart_for(surface_, b.uv);
     if (signed_uv_area(b.uv) < 0) chart_.mirror = -1;
     add_loop(b.uv, b.nodes, vertex_nodes, false);
     for (const NodeLoop& hole : b.holes) add_loop(hole.uv, hole.nodes, vertex_nodes, true);
@@ -112,18 +129,19 @@ class FaceChart {
 
     const auto placing = std::chrono::steady_clock::now();
     const std::size_t n = boundary_nodes_.size();
-    std::vector<Vec3> uv = uv_;
+    std::vector<Vec3> own = own_;
     out.interior.reserve(mesh.nodes.size() - n);
     for (std::size_t i = n; i < mesh.nodes.size(); ++i) {
-      uv.push_back(chart_.to_uv(mesh.nodes[i]));
-      out.interior.push_back(to_vec3(surface_.Value(uv.back().x, uv.back().y)));
+      own.push_back(chart_.to_own(mesh.nodes[i]));
+      const Vec3 uv = chart_.surface_uv(own.back());
+      out.interior.push_back(to_vec3(surface_.Value(uv.x, uv.y)));
     }
     out.placement_seconds = seconds_since(placing);
     std::vector<Vec3> xyz;
     xyz.reserve(mesh.nodes.size());
     for (NodeId id : boundary_nodes_) xyz.push_back(nodes_[id]);
     xyz.insert(xyz.end(), out.interior.begin(), out.interior.end());
-    check_on_surface(face_, surface_, uv, std::nullopt, xyz, out);
+    check_on_surface(face_, surface_, own, chart_.polar, xyz, out);
     return out;
   }
 
@@ -131,22 +149,23 @@ class FaceChart {
   const PlanarDomain& whole_domain() const { return domain_; }
 
  private:
-  // Holes run clockwise in the chart, the outer loop counter-clockwise.
-  void add_loop(std::vector<Vec3> uv, std::vector<NodeId> ids, int vertex_nodes, bool hole) {
+  // Holes run clockwise in the chart, the outer loop counter-clockwise. `own`: the
+  // loop's points in the face's own coordinates.
+  void add_loop(std::vector<Vec3> own, std::vector<NodeId> ids, int vertex_nodes, bool hole) {
     DomainLoop loop;
-    for (std::size_t i = 0; i < uv.size(); ++i) {
-      loop.points.push_back(chart_.to_chart(uv[i]));
+    for (std::size_t i = 0; i < own.size(); ++i) {
+      loop.points.push_back(chart_.to_chart(own[i]));
       loop.vertex.push_back(ids[i] < vertex_nodes);
     }
     if (hole && twice_signed_area(loop.points) > 0) {
       std::reverse(loop.points.begin(), loop.points.end());
       std::reverse(loop.vertex.begin(), loop.vertex.end());
       std::reverse(ids.begin(), ids.end());
-      std::reverse(uv.begin(), uv.end());
+      std::reverse(own.begin(), own.end());
     }
     domain_.loops.push_back(std::move(loop));
     boundary_nodes_.insert(boundary_nodes_.end(), ids.begin(), ids.end());
-    uv_.insert(uv_.end(), uv.begin(), uv.end());
+    own_.insert(own_.end(), own.begin(), own.end());
   }
 
   const TopoDS_Face& face_;
@@ -158,7 +177,7 @@ class FaceChart {
   PlanarDomain domain_;
   RingedDomain ringed_;
   std::vector<NodeId> boundary_nodes_;
-  std::vector<Vec3> uv_;
+  std::vector<Vec3> own_;  // each boundary node's own coordinates ((u, v) or polar)
 };
 
 // The variants of the plain decomposition that may mesh a face better

@@ -174,8 +174,13 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     refusal_code = refusal_code_of(e);
   };
   const bool pole = boundary.has_degenerate_edge || boundary.polar;
-  if (boundary.inner_wires > 0 && pole) throw FaceRefusalError(RefusalCode::not_supported, name + " has a hole and a pole; not supported yet");
-  bool decompose = !pole;
+  // Around a smooth pole (a sphere's) the face is decomposed in polar (x, y), holes
+  // and all; a cone's tip must stay a node, which only the disk routes make sure of.
+  const bool smooth_polar = boundary.polar && boundary.smooth_pole;
+  if (boundary.inner_wires > 0 && pole && !smooth_polar) {
+    throw FaceRefusalError(RefusalCode::not_supported, name + " has a hole and a pole (a cone's tip); not supported yet");
+  }
+  bool decompose = !pole || smooth_polar;
   const auto requested = options.corners.find(f);
   const bool user_corners = requested != options.corners.end();
   std::vector<std::vector<int>> natural_corners;
@@ -214,8 +219,9 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
       }
     }
     // A disk's O-grid (a square and four patches around it) beats corners on a smooth
-    // curve; offered when the face has no user corners and no pole.
-    if (decompose) {
+    // curve; offered when the face has no user corners and no pole (a polar disk had
+    // its own above).
+    if (decompose && !boundary.polar) {
       try {
         if (auto disk = mesh_face_disk(index.face(f), f, boundary, nodes, index.vertex_count(), options.templates)) {
           keep(std::move(*disk));

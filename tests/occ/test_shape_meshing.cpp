@@ -24,7 +24,10 @@
 #include <BRepTools.hxx>
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Writer.hxx>
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
 #include <STEPControl_Writer.hxx>
 #include <TopExp_Explorer.hxx>
 #include <BRepBndLib.hxx>
@@ -345,6 +348,41 @@ TEST(ShapeMeshing, SphereCapsGetTheDiskOGridConvexOrConcave) {
         EXPECT_GT(worst, 0.5);
       }
     }
+  }
+}
+
+TEST(ShapeMeshing, SphereCapsWithAHoleAreDecomposedAroundTheirPole) {
+  // A hemispherical dimple of radius 8 in a block, and a dome of radius 8 on it, each
+  // drilled through off its pole by a hole of radius 2: the sphere's face has its
+  // pole, its seam and a hole. It was refused ("a hole and a pole"); around a
+  // sphere's pole (a smooth one) the face is decomposed in polar (x, y).
+  const TopoDS_Shape block = BRepPrimAPI_MakeBox(40, 40, 20).Shape();
+  const TopoDS_Shape ball = BRepPrimAPI_MakeSphere(gp_Pnt(20, 20, 20), 8).Shape();
+  const TopoDS_Shape drill = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(24, 20, -1), gp_Dir(0, 0, 1)), 2, 40).Shape();
+  const TopoDS_Shape dimple = BRepAlgoAPI_Cut(BRepAlgoAPI_Cut(block, ball).Shape(), drill).Shape();
+  const TopoDS_Shape dome = BRepAlgoAPI_Cut(BRepAlgoAPI_Fuse(block, ball).Shape(), drill).Shape();
+  for (const auto& [shape, name] : {std::pair{dimple, "dimple"}, std::pair{dome, "dome"}}) {
+    SCOPED_TRACE(name);
+    const FileReport r = check_primitive(shape, name);
+    EXPECT_EQ(r.refused, 0);
+    EXPECT_TRUE(r.closed);
+    ShapeMeshOptions options;
+    options.size = 2.0;
+    const ShapeMeshResult result = mesh_shape(shape, options);
+    const ShapeIndex index(shape);
+    int spheres = 0;
+    for (const FaceMesh& f : result.mesh.faces) {
+      if (BRepAdaptor_Surface(index.face(f.face)).GetType() != GeomAbs_Sphere) continue;
+      ++spheres;
+      double worst = 1.0;
+      for (std::int64_t k = f.first_quad; k < f.first_quad + f.quad_count; ++k) {
+        worst = std::min(worst, result.mesh.scaled_jacobian[k]);
+      }
+      std::printf("[ quality  ] %s's sphere face with a hole: %s, %lld quads, worst scaled Jacobian %.3f\n", name,
+                  f.template_tree.substr(0, 12).c_str(), static_cast<long long>(f.quad_count), worst);
+      EXPECT_GT(worst, 0.3);
+    }
+    EXPECT_EQ(spheres, 1);
   }
 }
 
