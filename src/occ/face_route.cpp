@@ -18,6 +18,7 @@
 #include "occ/crossing_chords.h"
 #include "occ/face_corners.h"
 #include "occ/face_decomposed.h"
+#include "occ/face_mesh_closure.h"
 #include "occ/surface_smoothing.h"
 
 namespace tquad {
@@ -342,6 +343,8 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
       outcome.boundary = around_pole(outcome.boundary, index.face(f), f, nodes);
     }
     outcome.mesh = best_face_mesh(index, f, outcome.boundary, sector ? &*sector : nullptr, nodes, options, size);
+    const std::string open = face_mesh_closure_problem(index, f, edges, outcome.mesh);
+    if (!open.empty()) throw std::logic_error(open);  // a route's bug: an internal failure
     outcome.ok = true;
   } catch (const InputError& e) {
     outcome.reason = e.what();
