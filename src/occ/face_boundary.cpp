@@ -326,6 +326,7 @@ struct WireWalk {
 WireWalk walk_wire(const TopoDS_Wire& wire, const TopoDS_Face& face, int face_index, const ShapeIndex& index,
                    const std::vector<EdgeNodes>& edges) {
   WireWalk w;
+  std::vector<std::pair<int, NodeId>> ends;  // each occurrence's edge and its last node
   for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next()) {
     const TopoDS_Edge& occurrence = it.Current();
     const int e = index.edge_index(occurrence);
@@ -338,6 +339,9 @@ WireWalk walk_wire(const TopoDS_Wire& wire, const TopoDS_Face& face, int face_in
       w.has_degenerate_edge = true;
       continue;
     }
+    if (en.nodes.size() < 2 || en.params.size() != en.nodes.size()) {
+      throw std::runtime_error("edge " + std::to_string(e) + " of face " + std::to_string(face_index) + " was not discretized");
+    }
     const bool reversed = occurrence.Orientation() == TopAbs_REVERSED;
     const int n = static_cast<int>(en.nodes.size()) - 1;
     w.occurrences.push_back({occurrence, reversed ? en.params[n] : en.params[0], reversed ? en.params[0] : en.params[n],
@@ -348,6 +352,18 @@ WireWalk walk_wire(const TopoDS_Wire& wire, const TopoDS_Face& face, int face_in
       w.nodes.push_back(en.nodes[i]);
       const gp_Pnt2d p = pcurve->Value(en.params[i]);
       w.uv.push_back({p.X(), p.Y(), 0.0});
+    }
+    ends.push_back({e, en.nodes[reversed ? 0 : n]});
+  }
+  // Each edge ends where the next one starts: a wire closed by two vertices at one
+  // point (a boolean left one on a generated part) would leave a crack there.
+  for (std::size_t k = 0; k < ends.size(); ++k) {
+    const NodeId next = w.occurrences[(k + 1) % ends.size()].start_node;
+    if (ends[k].second != next) {
+      throw FaceRefusalError(RefusalCode::damaged,
+                             "face " + std::to_string(face_index) + ": its edge " + std::to_string(ends[k].first) +
+                                 " ends at another vertex than the next edge of its wire starts at, though at one "
+                                 "point (a wire closed by two vertices? a damaged file?)");
     }
   }
   return w;
@@ -367,6 +383,12 @@ FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::v
     if (w.Current().IsSame(outer)) continue;
     ++b.inner_wires;
     const WireWalk hole = walk_wire(TopoDS::Wire(w.Current()), face, face_index, index, edges);
+    if (hole.nodes.empty()) {  // OpenCASCADE's wire explorer found no edge joined to the next
+      throw FaceRefusalError(RefusalCode::damaged, "face " + std::to_string(face_index) + "'s hole " +
+                                                       std::to_string(b.inner_wires) +
+                                                       " gives no edge in order: its edges do not join end to end (a wire closed by two vertices at one "
+                                                       "point? a damaged file?)");
+    }
     NodeLoop loop{hole.nodes, hole.uv, {}, {}};
     for (const WireWalk::Occurrence& o : hole.occurrences) {
       loop.edge_start.push_back(o.start);

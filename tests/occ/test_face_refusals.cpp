@@ -3,10 +3,13 @@
 // keep_going the job stops with FacesRefusedError carrying the same records.
 #include <gtest/gtest.h>
 
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRep_Builder.hxx>
 #include <Geom_BSplineCurve.hxx>
+#include <Geom_Circle.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
@@ -17,12 +20,14 @@
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Compound.hxx>
+#include <gp_Circ.hxx>
 #include <gp_Pnt.hxx>
 
 #include <algorithm>
 #include <cstdio>
 #include <string>
 
+#include "core/input_error.h"
 #include "occ/edge_discretization.h"
 #include "occ/shape_index.h"
 #include "occ/shape_mesher.h"
@@ -149,6 +154,42 @@ TEST(FaceRefusals, AVertexWhoseToleranceBridgesAWideGapMakesItsEdgesUnusable) {
   for (const auto& [edge, why] : unusable) {
     EXPECT_EQ(why, std::string("ends at the vertex at ") + at +
                        ", whose tolerance 2 is over 1% of the shape's 17.3 across: the edges there do not meet");
+  }
+}
+
+TEST(FaceRefusals, AHoleWhoseEdgesDoNotJoinIsDamaged) {
+  // A plate 20 across with a hole of one circle edge whose two ends are two vertices
+  // at one point (as a boolean left on a generated part, where OpenCASCADE's wire
+  // explorer gave no edge of it and the face was refused as "a hole of only 0
+  // segments", as if a smaller size would help). Walked, the hole would close on its
+  // first vertex and leave the second alone: a crack.
+  const gp_Circ circle(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 3.0);
+  BRep_Builder builder;
+  TopoDS_Vertex start, end;
+  builder.MakeVertex(start, gp_Pnt(3, 0, 0), 1e-7);
+  builder.MakeVertex(end, gp_Pnt(3, 0, 0), 1e-7);
+  TopoDS_Edge rim;  // (BRepBuilderAPI_MakeEdge refuses to build it)
+  builder.MakeEdge(rim, new Geom_Circle(circle), 1e-7);
+  builder.Add(rim, start.Oriented(TopAbs_FORWARD));
+  builder.Add(rim, end.Oriented(TopAbs_REVERSED));
+  builder.Range(rim, 0.0, 2 * M_PI);
+  TopoDS_Wire hole;
+  builder.MakeWire(hole);
+  builder.Add(hole, rim.Reversed());
+  TopoDS_Face plate = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakePolygon(gp_Pnt(-10, -10, 0), gp_Pnt(10, -10, 0),
+                                                                         gp_Pnt(10, 10, 0), gp_Pnt(-10, 10, 0), true)
+                                                  .Wire())
+                          .Face();
+  plate.Free(true);  // built faces are frozen against changes
+  builder.Add(plate, hole);
+  ShapeMeshOptions options;
+  options.keep_going = true;
+  try {
+    const ShapeMeshResult result = mesh_shape(plate, options);
+    ADD_FAILURE() << "the plate was meshed";
+  } catch (const InputError& e) {  // its only face refused: nothing meshed
+    const std::string what = e.what();
+    EXPECT_NE(what.find("a wire closed by two vertices"), std::string::npos) << what;
   }
 }
 
