@@ -316,6 +316,13 @@ TEST(ShapeMeshing, SharpConeTipsAreMetByTwoQuads) {
   }
 }
 
+// The lowest scaled Jacobian (each corner against the surface normal) of face f's quads.
+double face_worst(const ShapeMesh& mesh, const FaceMesh& f) {
+  double worst = 1.0;
+  for (std::int64_t k = f.first_quad; k < f.first_quad + f.quad_count; ++k) worst = std::min(worst, mesh.scaled_jacobian[k]);
+  return worst;
+}
+
 TEST(ShapeMeshing, SphereCapsGetTheDiskOGridConvexOrConcave) {
   // Caps of a sphere of radius 10 from latitude `from` to its pole, closed by a disk:
   // short of, at and past the equator. Reversed, the same solid is a cavity, its
@@ -340,10 +347,7 @@ TEST(ShapeMeshing, SphereCapsGetTheDiskOGridConvexOrConcave) {
       for (const FaceMesh& f : result.mesh.faces) {
         if (BRepAdaptor_Surface(index.face(f.face)).GetType() != GeomAbs_Sphere) continue;
         EXPECT_EQ(f.template_tree.substr(0, 2), "O5") << f.template_tree;
-        double worst = 1.0;
-        for (std::int64_t k = f.first_quad; k < f.first_quad + f.quad_count; ++k) {
-          worst = std::min(worst, result.mesh.scaled_jacobian[k]);
-        }
+        const double worst = face_worst(result.mesh, f);
         std::printf("[ quality  ] sphere cap from %5.1f deg, %s: %s, worst scaled Jacobian %.3f\n", degrees,
                     concave ? "concave" : "convex ", f.template_tree.substr(0, 2).c_str(), worst);
         EXPECT_GT(worst, 0.5);
@@ -375,10 +379,7 @@ TEST(ShapeMeshing, SphereCapsWithAHoleAreDecomposedAroundTheirPole) {
     for (const FaceMesh& f : result.mesh.faces) {
       if (BRepAdaptor_Surface(index.face(f.face)).GetType() != GeomAbs_Sphere) continue;
       ++spheres;
-      double worst = 1.0;
-      for (std::int64_t k = f.first_quad; k < f.first_quad + f.quad_count; ++k) {
-        worst = std::min(worst, result.mesh.scaled_jacobian[k]);
-      }
+      const double worst = face_worst(result.mesh, f);
       std::printf("[ quality  ] %s's sphere face with a hole: %s, %lld quads, worst scaled Jacobian %.3f\n", name,
                   f.template_tree.substr(0, 12).c_str(), static_cast<long long>(f.quad_count), worst);
       EXPECT_GT(worst, 0.3);
