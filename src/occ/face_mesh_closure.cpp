@@ -63,17 +63,22 @@ std::string face_mesh_closure_problem(const ShapeIndex& index, int face, const s
   for (const Quad& q : mesh.quads) {
     for (int k = 0; k < 4; ++k) ++uses[edge_key(global(q[k]), global(q[(k + 1) % 4]))];
   }
+  // Inside: two quads, no edge segment. On the boundary: one quad, one segment. Two
+  // edges of one segment each between the same two nodes (a seam an IGES file gives
+  // as two edges) are one mesh edge between two quads, like a seam.
   for (const auto& [key, count] : uses) {
-    if (count > 2) return name + ": its mesh edge from " + edge_text(key) + " is in " + std::to_string(count) + " quads";
-    if (count == 2) continue;
     const auto it = expected.find(key);
-    if (it == expected.end() || it->second == 0) {
+    const int segments = it == expected.end() ? 0 : it->second;
+    if (count > 2) return name + ": its mesh edge from " + edge_text(key) + " is in " + std::to_string(count) + " quads";
+    if (count == 2 && (segments == 0 || segments == 2)) continue;
+    if (count == 1 && segments == 1) continue;
+    if (count == 1) {
       return name + ": its mesh edge from " + edge_text(key) + " is in one quad but on none of the face's edges (a crack)";
     }
-    --it->second;
+    return name + ": its mesh edge from " + edge_text(key) + " on the face's edge is in two quads";
   }
-  for (const auto& [key, left] : expected) {
-    if (left > 0) return name + ": its edge segment from " + edge_text(key) + " is in no quad of its mesh";
+  for (const auto& [key, segments] : expected) {
+    if (uses.find(key) == uses.end()) return name + ": its edge segment from " + edge_text(key) + " is in no quad of its mesh";
   }
   return {};
 }

@@ -2,7 +2,8 @@
 //
 // Every mesh edge in one quad only is a segment of one of the face's edges (seams,
 // met twice, aside: their segments lie inside the mesh), each such segment is in
-// exactly one quad, and no mesh edge is in more than two. The routes check their
+// exactly one quad, and no mesh edge is in more than two (two edges of one segment
+// between the same nodes, a seam given as two edges, make one mesh edge in two). The routes check their
 // meshes against the loops they were given; this checks the loops too. A face around
 // a pole whose seam passed through a hole was given a loop that jumped from the rim
 // to the hole across the face: its mesh passed every other check and left a crack of

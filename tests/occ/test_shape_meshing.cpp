@@ -648,6 +648,27 @@ TEST(ShapeMeshing, IgesInput) {
   EXPECT_EQ(r.refused, 0);
 }
 
+TEST(ShapeMeshing, AnIgesSeamOfTwoEdgesClosesTheMesh) {
+  // A cylinder 2 high written as IGES trimmed surfaces (faces mode, as FreeCAD
+  // writes it): its side's seam comes back as two edges between the same two
+  // vertices. At size 3 each is one segment, and the mesh's two sides of the seam
+  // are one mesh edge in two quads: the closure check (face_mesh_closure.h) called
+  // that an edge segment in no quad and refused the face as an internal failure.
+  const std::string path = (fs::temp_directory_path() / "short_cylinder.igs").string();
+  IGESControl_Controller::Init();
+  IGESControl_Writer writer("MM", 0);  // 0: faces mode
+  ASSERT_TRUE(writer.AddShape(BRepPrimAPI_MakeCylinder(5, 2).Shape()));
+  writer.ComputeModel();
+  ASSERT_TRUE(writer.Write(path.c_str()));
+  ShapeMeshOptions options;
+  options.size = 3;
+  options.keep_going = true;
+  const ShapeMeshResult result = mesh_shape(read_shape(path), options);
+  fs::remove(path);
+  EXPECT_TRUE(result.mesh.refused_faces.empty()) << result.mesh.refused_faces.front().reason;
+  EXPECT_EQ(result.mesh.faces.size(), 3u);
+}
+
 // The shipped bracket written as IGES (in millimetres, B-rep entities) by OpenCASCADE.
 std::string bracket_as_iges() {
   const TopoDS_Shape bracket = read_shape(std::string(TQUAD_SOURCE_DIR) + "/resources/shapes/filleted_bracket.brep");
