@@ -316,6 +316,17 @@ TEST(ShapeMeshing, SharpConeTipsAreMetByTwoQuads) {
   }
 }
 
+// `shape` checked like the parts (check_primitive), closed and nothing refused, and its
+// mesh at `size`.
+ShapeMeshResult checked_and_meshed(const TopoDS_Shape& shape, const std::string& name, double size) {
+  const FileReport r = check_primitive(shape, name);
+  EXPECT_EQ(r.refused, 0);
+  EXPECT_TRUE(r.closed);
+  ShapeMeshOptions options;
+  options.size = size;
+  return mesh_shape(shape, options);
+}
+
 // The lowest scaled Jacobian (each corner against the surface normal) of face f's quads.
 double face_worst(const ShapeMesh& mesh, const FaceMesh& f) {
   double worst = 1.0;
@@ -336,12 +347,7 @@ TEST(ShapeMeshing, SphereCapsGetTheDiskOGridConvexOrConcave) {
       SCOPED_TRACE(std::to_string(degrees) + (concave ? " degrees, concave" : " degrees, convex"));
       TopoDS_Shape cap = BRepPrimAPI_MakeSphere(10.0, degrees * M_PI / 180, M_PI / 2).Shape();
       if (concave) cap.Reverse();
-      const FileReport r = check_primitive(cap, "sphere_cap");
-      EXPECT_EQ(r.refused, 0);
-      EXPECT_TRUE(r.closed);
-      ShapeMeshOptions options;
-      options.size = 2.0;
-      const ShapeMeshResult result = mesh_shape(cap, options);
+      const ShapeMeshResult result = checked_and_meshed(cap, "sphere_cap", 2.0);
       const ShapeIndex index(cap);
       ASSERT_EQ(result.mesh.scaled_jacobian.size(), result.mesh.quads.size());
       for (const FaceMesh& f : result.mesh.faces) {
@@ -368,12 +374,7 @@ TEST(ShapeMeshing, SphereCapsWithAHoleAreDecomposedAroundTheirPole) {
   const TopoDS_Shape dome = BRepAlgoAPI_Cut(BRepAlgoAPI_Fuse(block, ball).Shape(), drill).Shape();
   for (const auto& [shape, name] : {std::pair{dimple, "dimple"}, std::pair{dome, "dome"}}) {
     SCOPED_TRACE(name);
-    const FileReport r = check_primitive(shape, name);
-    EXPECT_EQ(r.refused, 0);
-    EXPECT_TRUE(r.closed);
-    ShapeMeshOptions options;
-    options.size = 2.0;
-    const ShapeMeshResult result = mesh_shape(shape, options);
+    const ShapeMeshResult result = checked_and_meshed(shape, name, 2.0);
     const ShapeIndex index(shape);
     int spheres = 0;
     for (const FaceMesh& f : result.mesh.faces) {
