@@ -60,9 +60,9 @@ Chart chart_for(const BRepAdaptor_Surface& surface, const std::vector<Vec3>& uv)
 }
 
 // Polar (x, y) around a smooth pole scaled alike in x and y by the loop's length in
-// space over its length in (x, y): near a sphere's pole the map is its azimuthal
-// equidistant projection, lengths kept along radii and shortened across them by at
-// most 2 / pi at the equator.
+// space over its length in (x, y), so the rim keeps its length. On a sphere the map
+// is its azimuthal equidistant projection, its radii uniform: a hemisphere's come out
+// 2 / pi of their length on the surface, shallower caps' nearer their own.
 Chart polar_chart(const FaceBoundary& b) {
   double along = 0;
   for (std::size_t i = 0; i < b.uv.size(); ++i) along += distance(b.uv[i], b.uv[(i + 1) % b.uv.size()]);
