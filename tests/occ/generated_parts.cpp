@@ -144,24 +144,21 @@ TopoDS_Shape generated_part(std::uint32_t seed) {
     }
     return chosen;
   };
-  if (dice.chance(0.6)) {
-    const double r = dice.uniform(0.5, 4);
-    const std::vector<TopoDS_Edge> edges = some_edges(0.3);
+  // Fillets, then chamfers, on a share of the edges: `add` puts one edge on the builder.
+  const auto blend = [&](double p, double lo, double hi, double share, auto builder, auto add) {
+    if (!dice.chance(p)) return;
+    const double size = dice.uniform(lo, hi);
+    const std::vector<TopoDS_Edge> edges = some_edges(share);
     part = tried(part, [&](const TopoDS_Shape& s) {
-      BRepFilletAPI_MakeFillet fillet(s);
-      for (const TopoDS_Edge& e : edges) fillet.Add(r, e);
-      return fillet.Shape();
+      auto maker = builder(s);
+      for (const TopoDS_Edge& e : edges) add(maker, size, e);
+      return maker.Shape();
     });
-  }
-  if (dice.chance(0.3)) {
-    const double d = dice.uniform(0.5, 2);
-    const std::vector<TopoDS_Edge> edges = some_edges(0.2);
-    part = tried(part, [&](const TopoDS_Shape& s) {
-      BRepFilletAPI_MakeChamfer chamfer(s);
-      for (const TopoDS_Edge& e : edges) chamfer.Add(d, e);
-      return chamfer.Shape();
-    });
-  }
+  };
+  blend(0.6, 0.5, 4, 0.3, [](const TopoDS_Shape& s) { return BRepFilletAPI_MakeFillet(s); },
+        [](BRepFilletAPI_MakeFillet& m, double r, const TopoDS_Edge& e) { m.Add(r, e); });
+  blend(0.3, 0.5, 2, 0.2, [](const TopoDS_Shape& s) { return BRepFilletAPI_MakeChamfer(s); },
+        [](BRepFilletAPI_MakeChamfer& m, double d, const TopoDS_Edge& e) { m.Add(d, e); });
   return part;
 }
 
