@@ -22,7 +22,8 @@ struct CutProblem {
   std::vector<int> minimum;
   std::vector<std::vector<int>> patches_of_cut;  // a cut's patches, with repeats
 
-  CutProblem(const PlanarDomain& domain, const FaceDecomposition& d, double size)
+  CutProblem(const PlanarDomain& domain, const FaceDecomposition& d, double size,
+             const std::vector<int>& turn_minimums)
       : domain(domain), d(d), cuts(static_cast<int>(d.cuts.size())), patches(static_cast<int>(d.patches.size())),
         goal(cuts), minimum(cuts, 1), patches_of_cut(cuts) {
     for (int p = 0; p < patches; ++p) {
@@ -31,6 +32,7 @@ struct CutProblem {
     // A cut of a three-sided patch: kThreeCurveSideMinimum.
     for (int c = 0; c < cuts; ++c) {
       for (int p : patches_of_cut[c]) if (d.patches[p].sides.size() == 3) minimum[c] = kThreeCurveSideMinimum;
+      if (c < static_cast<int>(turn_minimums.size())) minimum[c] = std::max(minimum[c], turn_minimums[c]);
       goal[c] = std::max(d.cuts[c].length / size, static_cast<double>(minimum[c]));
       check_goal(goal[c], "cut " + std::to_string(c));
     }
@@ -113,12 +115,13 @@ bool make_patches_even(const CutProblem& pr, const std::vector<std::vector<int>>
 
 }  // namespace
 
-std::vector<int> assign_cut_intervals(const PlanarDomain& domain, const FaceDecomposition& d, double size) {
+std::vector<int> assign_cut_intervals(const PlanarDomain& domain, const FaceDecomposition& d, double size,
+                                      const std::vector<int>& turn_minimums) {
   if (domain.point_count() % 2 != 0) {
     throw InputError("the boundary has " + std::to_string(domain.point_count()) +
                      " segments, an odd number; a quad mesh needs an even total");
   }
-  const CutProblem pr(domain, d, size);
+  const CutProblem pr(domain, d, size, turn_minimums);
   std::vector<int> count(pr.cuts);
   const std::vector<std::vector<int>> chains = equal_count_chains(pr, count);
   std::vector<int> chained = count;

@@ -1,7 +1,8 @@
 // assign_cut_intervals: the number of edges on each cut of a face decomposition.
 //
 // The boundary's counts are fixed (shared with the neighbouring faces). Each cut's goal
-// is its length / size, at least 1 (2 on a three-sided patch). Opposite cuts of a
+// is its length / size, at least 1 (2 on a three-sided patch, and the turn minimum
+// below on a curved surface). Opposite cuts of a
 // four-sided patch are joined into chains (when their goals are within a factor 1.5),
 // and a chain takes one count: the count of a boundary piece it faces when it can
 // (the patch is then a mapped grid), else the best fit of its goals. Then every patch
@@ -18,8 +19,12 @@
 
 namespace tquad {
 
+// `turn_minimums`: per cut, the fewest segments that stand for its shape on the
+// surface the domain charts (a cut straight in the chart may bend in space: across a
+// torus groove's tube, a half circle of 6 mm wants 4 segments where a 3 mm size
+// gives 2); empty in a plane. A cut's goal is at least its minimum.
 // Throws InputError when the domain's boundary total is odd.
 std::vector<int> assign_cut_intervals(const PlanarDomain& domain, const FaceDecomposition& decomposition,
-                                      double size);
+                                      double size, const std::vector<int>& turn_minimums = {});
 
 }  // namespace tquad

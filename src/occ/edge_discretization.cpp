@@ -24,11 +24,6 @@ namespace {
 
 TopoDS_Edge forward(const TopoDS_Edge& e) { return TopoDS::Edge(e.Oriented(TopAbs_FORWARD)); }
 
-// A segment stands for at most this much of a curve's turning, so that no quad cuts
-// across the surface it stands for: a full circle gets at least 8 segments, a
-// semicircle 4 (Gmsh's default is at least 7 points per circle).
-constexpr double kMaxSegmentTurn = M_PI / 4;
-
 // Total turning of the curve's tangent (radians), from 64 samples.
 double tangent_turn(const BRepAdaptor_Curve& curve) {
   constexpr int kSamples = 64;
@@ -150,13 +145,19 @@ std::map<int, std::string> unusable_edges(const ShapeIndex& index, const Box3& b
   return bad;
 }
 
+int segments_for_turn(double turn) {
+  constexpr double kMaxSegmentTurn = M_PI / 4;  // edge_discretization.h
+  if (!(turn > 0)) return 1;  // NaN too
+  return std::max(1, static_cast<int>(std::ceil(std::min(turn, 1e3) / kMaxSegmentTurn - 1e-9)));
+}
+
 std::vector<int> edge_turn_minimums(const ShapeIndex& index, const std::vector<char>& usable) {
   std::vector<int> minimum(index.edge_count(), 0);
   for (int e = 0; e < index.edge_count(); ++e) {
     if (!usable.empty() && !usable[e]) continue;
     const TopoDS_Edge edge = forward(index.edge(e));
     if (BRep_Tool::Degenerated(edge)) continue;
-    minimum[e] = std::max(1, static_cast<int>(std::ceil(tangent_turn(BRepAdaptor_Curve(edge)) / kMaxSegmentTurn - 1e-9)));
+    minimum[e] = segments_for_turn(tangent_turn(BRepAdaptor_Curve(edge)));
   }
   return minimum;
 }

@@ -29,6 +29,13 @@ struct EdgeNodes {
 // each with the reason; a damaged file's edges. Degenerate edges are not listed.
 std::map<int, std::string> unusable_edges(const ShapeIndex& index, const Box3& box);
 
+// The fewest segments that stand for a curve turning by `turn` radians: one per 45
+// degrees (so that no quad cuts across the surface it stands for: a full circle gets
+// at least 8 segments, a semicircle 4; Gmsh's default is at least 7 points per
+// circle), at least 1. Edges and the cuts of a decomposed face (face_decomposed.h)
+// both take it.
+int segments_for_turn(double turn);
+
 // Per edge, one segment per 45 degrees of its curve's turning, at least 1 (0 for a
 // degenerate edge): the fewest segments that stand for its shape.
 // `usable`: per edge, or empty for all; the others get 0.

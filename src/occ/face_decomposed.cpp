@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <optional>
+#include <stdexcept>
+#include <utility>
 
 #include "core/cut_intervals.h"
 #include "core/decomposed_mesher.h"
@@ -16,6 +19,7 @@
 #include "core/face_refusal.h"
 #include "core/input_error.h"
 #include "core/o_grid.h"
+#include "occ/edge_discretization.h"
 #include "occ/occ_vec.h"
 
 namespace tquad {
@@ -112,7 +116,9 @@ class FaceChart {
     const PlanarDomain& inner = ringed_.inner;
     return place(join_rings(domain_, ringed_,
                             mesh_decomposed_domain(inner, decomposition,
-                                                   assign_cut_intervals(inner, decomposition, edge_size), options,
+                                                   assign_cut_intervals(inner, decomposition, edge_size,
+                                                                        cut_turn_minimums(decomposition)),
+                                                   options,
                                                    memo)),
                  start);
   }
@@ -149,6 +155,55 @@ class FaceChart {
   const PlanarDomain& whole_domain() const { return domain_; }
 
  private:
+  // Per cut of `decomposition`, the fewest segments that stand for its turning on the
+  // surface (segments_for_turn, as edges get): a cut is straight in the chart, not in
+  // space. A torus groove of a shaft cut by a milled flat had cuts across its tube (a
+  // half circle of 6 mm) of 2 segments at a 3 mm size, and 8 of 96 quads inverted.
+  // None on a plane. The face's decompositions share most cuts: each is measured once.
+  std::vector<int> cut_turn_minimums(const FaceDecomposition& decomposition) const {
+    if (surface_.GetType() == GeomAbs_Plane) return {};
+    std::vector<int> minimums;
+    for (const CutCurve& cut : decomposition.cuts) {
+      const std::pair<int, int> ends = std::minmax(cut.from, cut.to);
+      auto known = cut_minimums_.find(ends);
+      if (known == cut_minimums_.end()) {
+        const double turn = turn_along(inner_point(ends.first), inner_point(ends.second));
+        known = cut_minimums_.emplace(ends, segments_for_turn(turn)).first;
+      }
+      minimums.push_back(known->second);
+    }
+    return minimums;
+  }
+
+  Vec3 inner_point(int id) const {
+    for (const DomainLoop& loop : ringed_.inner.loops) {
+      if (id < static_cast<int>(loop.points.size())) return loop.points[id];
+      id -= static_cast<int>(loop.points.size());
+    }
+    throw std::logic_error("a cut ends at no point of the domain");
+  }
+
+  // The turning in space of the chart's straight line from a to b: the angles between
+  // successive chords of kChords (it reads about 1/kChords low on a circle's arc).
+  double turn_along(const Vec3& a, const Vec3& b) const {
+    constexpr int kChords = 32;
+    double turn = 0;
+    Vec3 previous_point, previous_chord;
+    for (int i = 0; i <= kChords; ++i) {
+      const Vec3 uv = chart_.surface_uv(chart_.to_own(a + (static_cast<double>(i) / kChords) * (b - a)));
+      const Vec3 point = to_vec3(surface_.Value(uv.x, uv.y));
+      if (i > 0) {
+        const Vec3 chord = point - previous_point;
+        if (norm(chord) > 0) {
+          if (norm(previous_chord) > 0) turn += std::atan2(norm(cross(previous_chord, chord)), dot(previous_chord, chord));
+          previous_chord = chord;
+        }
+      }
+      previous_point = point;
+    }
+    return turn;
+  }
+
   // Holes run clockwise in the chart, the outer loop counter-clockwise. `own`: the
   // loop's points in the face's own coordinates.
   void add_loop(std::vector<Vec3> own, std::vector<NodeId> ids, int vertex_nodes, bool hole) {
@@ -178,6 +233,7 @@ class FaceChart {
   RingedDomain ringed_;
   std::vector<NodeId> boundary_nodes_;
   std::vector<Vec3> own_;  // each boundary node's own coordinates ((u, v) or polar)
+  mutable std::map<std::pair<int, int>, int> cut_minimums_;  // cut_turn_minimums, by the cut's ends
 };
 
 // The variants of the plain decomposition that may mesh a face better

@@ -21,6 +21,7 @@
 #include <gp_Circ.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRepTools.hxx>
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Writer.hxx>
@@ -515,6 +516,32 @@ TEST(ShapeMeshing, ChordsThatCrossAnotherEdgeAreRefined) {
   }
   EXPECT_GE(on_arc, 24);
   EXPECT_LE(on_lines, 4 + 4 + 1 + 1);  // 12.9 / 3.6, 9.5 / 3.6 and the short line, made even
+}
+
+TEST(ShapeMeshing, CutsAcrossAGrooveGetSegmentsForTheirTurn) {
+  // A shaft of radius 19.6 with an O-ring groove (a torus tube of radius 1.05 at
+  // z = 29.9) whose edge a milled flat (x >= 17.9, z from 10.2 to 30.7) cuts into:
+  // the groove's face has 7 edges and is decomposed, its cuts crossing the tube.
+  // Straight in the face's chart, such a cut is up to a half circle of 3.3 in space:
+  // at size 3.07 it got 1 or 2 segments, where edges of that turn get 4 (one per 45
+  // degrees), and 8 of 96 quads folded across the tube stayed inverted (the face
+  // refused). Its cuts now get as many segments as edges of the same turn.
+  TopoDS_Shape shaft = BRepPrimAPI_MakeCylinder(19.6, 41).Shape();
+  shaft = BRepAlgoAPI_Cut(shaft, BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(0, 0, 29.9), gp_Dir(0, 0, 1)), 19.6, 1.05).Shape())
+              .Shape();
+  shaft = BRepAlgoAPI_Cut(shaft, BRepPrimAPI_MakeBox(gp_Pnt(17.9, -19.6, 10.2), gp_Pnt(57, 19.6, 30.7)).Shape()).Shape();
+  int tori = 0;
+  for (TopExp_Explorer f(shaft, TopAbs_FACE); f.More(); f.Next()) {
+    tori += BRepAdaptor_Surface(TopoDS::Face(f.Current())).GetType() == GeomAbs_Torus;
+  }
+  ASSERT_GE(tori, 1);
+  ShapeMeshOptions options;
+  options.size = 3.07;
+  const ShapeMeshResult result = mesh_shape(shaft, options);
+  for (const RefusedFace& refused : result.mesh.refused_faces) ADD_FAILURE() << refused.reason;
+  EXPECT_EQ(result.inverted, 0);
+  ASSERT_FALSE(result.mesh.scaled_jacobian.empty());
+  EXPECT_GT(*std::min_element(result.mesh.scaled_jacobian.begin(), result.mesh.scaled_jacobian.end()), 0.2);
 }
 
 // A quarter ring between radii 9.2 and 10.5 around the z axis, meshed alone at size
