@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <iterator>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <unordered_map>
@@ -16,6 +17,7 @@
 #include "core/mesher.h"
 #include "core/quality.h"
 #include "occ/crossing_chords.h"
+#include "occ/edge_discretization.h"
 #include "occ/face_corners.h"
 #include "occ/face_decomposed.h"
 #include "occ/face_mesh_closure.h"
@@ -27,10 +29,32 @@ namespace {
 
 // A face whose quads stay inverted.
 struct InvertedQuadsError : FaceRefusalError {
-  InvertedQuadsError(const std::string& message, std::size_t quads)
-      : FaceRefusalError(RefusalCode::inverted_quads, message), quads(quads) {}
+  InvertedQuadsError(const std::string& message, std::size_t quads, bool coarse_for_curvature)
+      : FaceRefusalError(RefusalCode::inverted_quads, message), quads(quads),
+        coarse_for_curvature(coarse_for_curvature) {}
   std::size_t quads;  // in the face's best mesh
+  bool coarse_for_curvature;  // has_quad_over_curvature of that mesh
 };
+
+// Whether some quad of `mesh` spans more of its surface's turning than a segment may
+// stand for (segments_for_turn, the edges' rule): the surface normals at two of its
+// corners more than 45 degrees apart. Such a face is coarse for its curvature, and
+// finer edges may cure its inverted quads however many it has: a fillet band 1.5
+// wide twisting along 25 at size 8.6 (a generated part at D/10) had 3 of 20 quads
+// inverted to -0.75, their corners' normals up to 66 degrees apart.
+bool has_quad_over_curvature(const FaceMeshResult& mesh) {
+  if (mesh.normal.size() != mesh.boundary_nodes.size() + mesh.interior.size()) return false;
+  for (const Quad& q : mesh.quads) {
+    for (int i = 0; i < 4; ++i) {
+      for (int j = i + 1; j < 4; ++j) {
+        const Vec3 &a = mesh.normal[q[i]], &b = mesh.normal[q[j]];
+        if (norm(a) == 0 || norm(b) == 0) continue;  // singular there (a pole)
+        if (segments_for_turn(std::atan2(norm(cross(a, b)), dot(a, b))) > 1) return true;
+      }
+    }
+  }
+  return false;
+}
 
 // The refusal code of what a meshing route threw: the code it carries, cannot_mesh for
 // any other wrong input, internal for anything else (the mesher's own failure).
@@ -42,7 +66,8 @@ RefusalCode refusal_code_of(const std::exception& e) {
 // Finer edges may cure a face meshed with at most this many quads: a small curved face
 // of a few segments cannot be meshed on its surface however its nodes move. Larger
 // faces keep their counts (doubling them did not help in the parts measured, and it
-// grows the neighbours' meshes too).
+// grows the neighbours' meshes too) unless they are coarse for their curvature
+// (has_quad_over_curvature).
 constexpr std::size_t kRefinableQuads = 16;
 
 // A face meshed whole (templates on its own corners, or the one-hole O-grid) whose
@@ -325,7 +350,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     throw InvertedQuadsError(name + ": " + std::to_string(best->inverted) + " of " + std::to_string(best->quads.size()) +
                                  " quads stay inverted after repair (worst corner " + worst + "; " +
                                  best->template_tree.substr(0, 60) + ")",
-                             best->quads.size());
+                             best->quads.size(), has_quad_over_curvature(*best));
   }
   return std::move(*best);
 }
@@ -350,7 +375,8 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
     outcome.reason = e.what();
     outcome.code = refusal_code_of(e);
     const auto* inverted = dynamic_cast<const InvertedQuadsError*>(&e);
-    outcome.finer_edges_may_help = inverted && inverted->quads <= kRefinableQuads;
+    outcome.finer_edges_may_help =
+        inverted && (inverted->quads <= kRefinableQuads || inverted->coarse_for_curvature);
     if (!outcome.finer_edges_may_help) {
       outcome.refine_edges = edges_of_crossing_chords(index, f, outcome.boundary);
       outcome.finer_edges_may_help = !outcome.refine_edges.empty();

@@ -429,6 +429,25 @@ TEST(ShapeMeshing, GeneratedMachinedParts) {
   EXPECT_GE(parts, 30);  // the generator builds most seeds' parts
 }
 
+TEST(ShapeMeshing, FacesCoarseForTheirCurvatureGetFinerEdges) {
+  // Generated part 31 at a tenth of its diagonal: its face 22, a fillet band about 1.5
+  // wide twisting along 25, got 3 segments a side, and 3 of its 20 quads stayed
+  // inverted (-0.75), their corners' surface normals up to 66 degrees apart. Only
+  // faces of at most 16 quads had their edges refined; a face with a quad spanning
+  // more than 45 degrees of its surface's turning now has them refined too.
+  const std::string path = (fs::temp_directory_path() / "generated_part_31.brep").string();
+  if (!write_generated_part(31, path)) GTEST_SKIP() << "OpenCASCADE crashed building generated part 31";
+  const TopoDS_Shape part = read_shape(path);
+  fs::remove(path);
+  ShapeMeshOptions options;
+  options.keep_going = true;
+  options.size = mesh_shape(part, options).size * 25 / 10;
+  const ShapeMeshResult result = mesh_shape(part, options);
+  for (const RefusedFace& refused : result.mesh.refused_faces) ADD_FAILURE() << refused.reason;
+  EXPECT_GE(result.refinement_rounds, 1);
+  EXPECT_EQ(result.inverted, 0);
+}
+
 // A lens of two shallow arcs from (x, 0, 0) to (x + 1.2, 0, 0), bulging 0.05 each way:
 // the sliver a boolean leaves between two overlapping holes, or a hole and a fillet.
 TopoDS_Wire lens_wire(double x) {
