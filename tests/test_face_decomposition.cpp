@@ -413,6 +413,33 @@ TEST(FaceDecomposition, EveryPatchTotalIsEvenAfterIntervalAssignment) {
   }
 }
 
+TEST(FaceDecomposition, CutsTakeAtLeastTheirTurnMinimumsAndStayEven) {
+  // The same plate with a hole, each cut given a minimum from the surface's turning
+  // along it (cut_intervals.h): 6 on every other cut, 1 on the rest. Every cut gets
+  // at least its minimum, and every patch stays even.
+  PlanarDomain d;
+  d.loops.push_back(polygon_loop({{0, 0}, {5, 0}, {5, 3}, {0, 3}}, 7));
+  d.loops.push_back(circle_hole({2.5, 1.5}, 0.7, 10));
+  const FaceDecomposition decomposition = decompose_domain(d);
+  ASSERT_GE(decomposition.cuts.size(), 2u);
+  std::vector<int> minimums;
+  for (std::size_t c = 0; c < decomposition.cuts.size(); ++c) minimums.push_back(c % 2 == 0 ? 6 : 1);
+  const std::vector<int> plain = assign_cut_intervals(d, decomposition, 0.37);
+  const std::vector<int> counts = assign_cut_intervals(d, decomposition, 0.37, minimums);
+  int raised = 0;
+  for (std::size_t c = 0; c < counts.size(); ++c) {
+    EXPECT_GE(counts[c], minimums[c]) << "cut " << c;
+    raised += counts[c] > plain[c];
+  }
+  EXPECT_GT(raised, 0);  // the minimums acted: the plain counts are under 6 somewhere
+  for (const DomainPatch& p : decomposition.patches) {
+    int total = 0;
+    for (const PatchSide& s : p.sides) total += s.is_cut ? counts[s.index] : piece_segments(d, decomposition.pieces[s.index]);
+    EXPECT_EQ(total % 2, 0);
+  }
+  expect_valid(d, mesh_decomposed_domain(d, decomposition, counts, MeshOptions{}), "plate with turn minimums");
+}
+
 TEST(FaceDecomposition, SameDomainSameDecomposition) {
   const testing::GeneratedDomain g = testing::generated_domain(40);
   const QuadMesh a = mesh_planar_domain(g.domain, g.size), b = mesh_planar_domain(g.domain, g.size);
