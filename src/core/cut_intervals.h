@@ -21,8 +21,8 @@ namespace tquad {
 
 // `turn_minimums`: per cut, the fewest segments that stand for its shape on the
 // surface the domain charts (a cut straight in the chart may bend in space: across a
-// torus groove's tube, a half circle of 6 mm wants 4 segments where a 3 mm size
-// gives 2); empty in a plane. A cut's goal is at least its minimum.
+// torus groove's tube, a half circle 3.3 long wants 4 segments where a size of 3
+// gives 1); empty in a plane. A cut's goal is at least its minimum.
 // Throws InputError when the domain's boundary total is odd.
 std::vector<int> assign_cut_intervals(const PlanarDomain& domain, const FaceDecomposition& decomposition,
                                       double size, const std::vector<int>& turn_minimums = {});
