@@ -41,8 +41,8 @@ constexpr double kSquarePair = 0.866;
 
 int wrap(int i, int n) { return ((i % n) + n) % n; }
 
-// Unsigned angle between two vectors (radians, in [0, pi]).
-double angle_between(const Vec3& u, const Vec3& v) { return std::abs(signed_angle(u, v)); }
+// Unsigned angle between two vectors of the chart's plane (radians, in [0, pi]).
+double planar_angle_between(const Vec3& u, const Vec3& v) { return std::abs(signed_angle(u, v)); }
 
 // Signed turn of the loop at point i (radians, > 0 to the left).
 double turn_at(const std::vector<Vec3>& p, int i) {
@@ -471,7 +471,7 @@ class Decomposer {
     const int n = loop_size(l);
     if (hit.first == l && (hit.second == wrap(c - 1, n) || hit.second == (c + 1) % n)) return std::nullopt;
     const Vec3 cut = point(hit.first, hit.second) - from;
-    if (angle_between(cut, at - from) > most_lean) return std::nullopt;
+    if (planar_angle_between(cut, at - from) > most_lean) return std::nullopt;
     return hit;
   }
 
@@ -481,7 +481,7 @@ class Decomposer {
   bool faces(int l, int i, const Vec3& direction, double angle) const {
     const int n = loop_size(l);
     for (const Vec3& along : {point(l, i) - point(l, wrap(i - 1, n)), point(l, (i + 1) % n) - point(l, i)}) {
-      if (angle_between(Vec3{-along.y, along.x, 0}, direction) <= angle) return true;
+      if (planar_angle_between(Vec3{-along.y, along.x, 0}, direction) <= angle) return true;
     }
     return false;
   }
@@ -533,7 +533,7 @@ class Decomposer {
                 // A neighbour's point straight in front (across a sharp corner) counts
                 // when asked; never one of this piece's own.
                 if (!options_.neighbours_across_corners || wrap(i - first, n) <= inner + 1) continue;
-                if (angle_between(inward, point(m, i) - middle) > kInFront) continue;
+                if (planar_angle_between(inward, point(m, i) - middle) > kInFront) continue;
                 neighbour_gap = std::min(neighbour_gap, distance(middle, point(m, i)));
                 continue;
               }
@@ -596,8 +596,8 @@ class Decomposer {
         for (const auto& [l, p, from, to] : {std::tuple{lx, px, a, b}, std::tuple{ly, py, b, a}}) {
           const int n = loop_size(l);
           const Vec3 &prev = point(l, wrap(p - 1, n)), &next = point(l, wrap(p + 1, n));
-          if (angle_between(next - from, to - from) < kMinCutAngle) sliver.push_back({l, p});
-          if (angle_between(prev - from, to - from) < kMinCutAngle) sliver.push_back({l, wrap(p - 1, n)});
+          if (planar_angle_between(next - from, to - from) < kMinCutAngle) sliver.push_back({l, p});
+          if (planar_angle_between(prev - from, to - from) < kMinCutAngle) sliver.push_back({l, wrap(p - 1, n)});
         }
       }
     }

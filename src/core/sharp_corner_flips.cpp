@@ -20,12 +20,6 @@ Quad starting_at(Quad quad, NodeId n) {
   return quad;
 }
 
-double angle_between(const Vec3& a, const Vec3& b) {
-  const double la = norm(a), lb = norm(b);
-  if (la == 0 || lb == 0) return 0;
-  return std::acos(std::clamp(dot(a, b) / (la * lb), -1.0, 1.0));
-}
-
 // The two quads' worst corner, each corner signed by its node's normal.
 double worst_of(const Quad& a, const Quad& b, const std::vector<Vec3>& position, const std::vector<Vec3>& normal) {
   double worst = 1;

@@ -196,7 +196,7 @@ class FaceChart {
       if (i > 0) {
         const Vec3 chord = point - previous_point;
         if (norm(chord) > 0) {
-          if (norm(previous_chord) > 0) turn += std::atan2(norm(cross(previous_chord, chord)), dot(previous_chord, chord));
+          if (norm(previous_chord) > 0) turn += angle_between(previous_chord, chord);
           previous_chord = chord;
         }
       }

@@ -49,7 +49,7 @@ bool has_quad_over_curvature(const FaceMeshResult& mesh) {
       for (int j = i + 1; j < 4; ++j) {
         const Vec3 &a = mesh.normal[q[i]], &b = mesh.normal[q[j]];
         if (norm(a) == 0 || norm(b) == 0) continue;  // singular there (a pole)
-        if (segments_for_turn(std::atan2(norm(cross(a, b)), dot(a, b))) > 1) return true;
+        if (segments_for_turn(angle_between(a, b)) > 1) return true;
       }
     }
   }
