@@ -107,7 +107,7 @@ int run_cli(int argc, char** argv) {
                  "CAD input: print each stage, and the faces meshed in tenths, on stderr");
   mesh->add_option("--read-timeout", command.read.seconds,
                    "CAD input: seconds the reader (a child process) may take before the file\n"
-                   "is refused as damaged (default 300)")
+                   "is refused as damaged (default: 30 plus 30 per megabyte of the file)")
       ->type_name("S")
       ->check(CLI::Range(tquad::kMinReadSeconds, tquad::kMaxReadSeconds));
   mesh->add_flag("!--no-smooth", command.shape.smooth,
@@ -115,8 +115,9 @@ int run_cli(int argc, char** argv) {
                  "surfaces, nor of a boundary region in its plane or on the surface its mesh\n"
                  "spans (a curved loop)");
   mesh->add_flag("--allow-inverted", command.shape.allow_inverted,
-                 "CAD input: keep a face whose mesh still has inverted quads after repair\n"
-                 "(reported) instead of refusing it");
+                 "CAD input: keep a face whose mesh still has inverted, degenerate or folded\n"
+                 "quads after repair (a corner's scaled Jacobian at or below 1e-6 against the\n"
+                 "surface normal or the quad's own; reported per face) instead of refusing it");
   mesh->add_flag("--sew", command.shape.sew,
                  "CAD input: join faces that touch without sharing their edge (an IGES file of\n"
                  "trimmed surfaces) before meshing, so the mesh is connected there");

@@ -240,6 +240,16 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
     err << "tquad: warning: " << quality.collapsed << " of " << shape.quads.size()
         << " quads are collapsed (an edge under 1/1000 of the quad's longest: a triangle in effect)\n";
   }
+  if (!shape_result.bad_quad_faces.empty()) {
+    long long bad = 0;
+    std::string faces;
+    for (const auto& [face, count] : shape_result.bad_quad_faces) {
+      bad += count;
+      faces += (faces.empty() ? "" : ", ") + std::to_string(face);
+    }
+    err << "tquad: warning: " << bad << " of " << shape.quads.size()
+        << " quads are inverted, degenerate or folded (kept by --allow-inverted), in faces " << faces << "\n";
+  }
   for (const RefusedFace& f : shape.refused_faces) {
     err << "tquad: warning: refused " << one_line(f.reason) << "\n";
   }
@@ -260,6 +270,9 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
       report["edge_size"] = shape_result.size;
       report["refinement_rounds"] = shape_result.refinement_rounds;
       report["off_surface_quads"] = shape_result.off_surface;
+      nlohmann::ordered_json bad_faces = nlohmann::ordered_json::array();
+      for (const auto& [face, count] : shape_result.bad_quad_faces) bad_faces.push_back({{"face", face}, {"quads", count}});
+      report["bad_quad_faces"] = bad_faces;
       // Inside "mesh faces", summed over the faces (all threads): every candidate
       // route of each face before smoothing, then smoothing the chosen mesh.
       report["face_seconds"] = {{"meshing", shape_result.meshing_seconds},

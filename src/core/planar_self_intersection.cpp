@@ -24,6 +24,7 @@ Vec3 newell_normal(const std::vector<Vec3>& p) {
 }
 
 bool planar_normal(const std::vector<Vec3>& p, Vec3& unit_normal) {
+  if (p.size() < 3) return false;  // no plane: the loop's own check names what is short
   const Vec3 n = newell_normal(p);
   Vec3 centroid;
   for (const Vec3& q : p) centroid += q;

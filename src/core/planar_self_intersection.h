@@ -21,7 +21,7 @@ void check_planar_self_intersection(const std::vector<Vec3>& loop_points);
 Vec3 newell_normal(const std::vector<Vec3>& loop_points);
 
 // Unit normal of the loop's plane (oriented by the loop) when all its points lie on
-// one plane within 1e-9 of its size; false otherwise.
+// one plane within 1e-9 of its size; false otherwise (fewer than 3 points included).
 bool planar_normal(const std::vector<Vec3>& loop_points, Vec3& unit_normal);
 
 struct PlanarSegment {

@@ -171,6 +171,14 @@ bool is_collapsed(const std::array<Vec3, 4>& p) {
   return collapsed_sides(sides.shortest, sides.longest);
 }
 
+double own_scaled_jacobian(const std::array<Vec3, 4>& p) {
+  return scaled_jacobian(p, cross(p[2] - p[0], p[3] - p[1]));
+}
+
+bool is_bad_quad(const std::array<Vec3, 4>& p, double surface_worst) {
+  return !(surface_worst > kDegenerateUpTo) || !(own_scaled_jacobian(p) > kDegenerateUpTo);
+}
+
 namespace {
 
 struct Accumulator {

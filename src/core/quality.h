@@ -77,6 +77,21 @@ constexpr double kDegenerateUpTo = 1e-6;
 constexpr double kCollapsedEdgeRatio = 1e-3;
 bool is_collapsed(const std::array<Vec3, 4>& quad);
 
+// The quad's scaled Jacobian against its own normal, the cross product of its
+// diagonals: what any reader of the mesh measures, with no surface at hand.
+double own_scaled_jacobian(const std::array<Vec3, 4>& quad);
+
+// The one policy for quads unfit for analysis: a corner at or below kDegenerateUpTo
+// against the surface normal (`surface_worst`: the quad's lowest corner so measured)
+// or against its own normal (own_scaled_jacobian). A solver's Jacobian vanishes or
+// changes sign in such a quad, whichever normal shows it: a quad folded across a
+// curved surface can keep every corner positive against the surface's normals and not
+// against its own, and a 180-degree corner at a pole shows against its own normal
+// alone. A collapsed quad (is_collapsed) is not bad by this rule: an edge of the CAD
+// model far shorter than the element size makes one, a triangle in effect, which the
+// face cannot do without while the edge is in its boundary; it is counted apart.
+bool is_bad_quad(const std::array<Vec3, 4>& quad, double surface_worst);
+
 // Histogram of the scaled Jacobian: bin 0 counts the quads below 0 (inverted, or a
 // straight angle by rounding), bins 1 to 10 the tenths [0, 0.1), ..., [0.9, 1].
 constexpr int kJacobianBins = 11;

@@ -191,7 +191,7 @@ void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surfac
   // strongly curved face is judged where its corners are; where the surface is
   // singular at the node (a pole), the normal at the quad's centre stands in, and
   // where it is singular there too, the quad's own (the diagonals' cross product).
-  long long inverted = 0, collapsed = 0, off_surface = 0;
+  long long inverted = 0, bad = 0, collapsed = 0, off_surface = 0;
   double worst = 1.0;
   out.scaled_jacobian.clear();
   out.scaled_jacobian.reserve(out.quads.size());
@@ -217,6 +217,7 @@ void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surfac
     worst = std::min(worst, quad_worst);
     out.scaled_jacobian.push_back(quad_worst);
     inverted += quad_worst < -kSurfaceInvertedBelow ? 1 : 0;
+    bad += is_bad_quad(corner, quad_worst) ? 1 : 0;
     collapsed += is_collapsed(corner) ? 1 : 0;
     // How far the quad's centre lies off the surface (at its parameters' centre),
     // along its corners' mean normal, against its longer diagonal: a quad cutting
@@ -231,6 +232,7 @@ void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surfac
     }
   }
   out.inverted = inverted;
+  out.bad = bad;
   out.collapsed = collapsed;
   out.off_surface = off_surface;
   out.worst_corner = worst;
@@ -255,6 +257,7 @@ void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surfac
 }
 
 bool better_face_mesh(const FaceMeshResult& a, const FaceMeshResult& b) {
+  if (a.bad != b.bad) return a.bad < b.bad;
   if (a.inverted != b.inverted) return a.inverted < b.inverted;
   if (a.collapsed != b.collapsed) return a.collapsed < b.collapsed;
   return a.worst_corner > b.worst_corner;
@@ -268,7 +271,8 @@ double mean_scaled_jacobian(const FaceMeshResult& m) {
 }
 
 bool better_worst_then_mean(const FaceMeshResult& a, const FaceMeshResult& b) {
-  if (a.inverted != b.inverted || a.collapsed != b.collapsed || std::abs(a.worst_corner - b.worst_corner) > 1e-9) {
+  if (a.bad != b.bad || a.inverted != b.inverted || a.collapsed != b.collapsed ||
+      std::abs(a.worst_corner - b.worst_corner) > 1e-9) {
     return better_face_mesh(a, b);
   }
   return mean_scaled_jacobian(a) > mean_scaled_jacobian(b);
@@ -296,7 +300,7 @@ FaceMeshResult mesh_face(const ShapeIndex& index, int face_index, const FaceBoun
       uv_problem = e.what();
     }
   }
-  if (!best || best->inverted > 0) {
+  if (!best || best->bad > 0) {
     try {
       FaceMeshResult in_space = mesh_in_space(face, boundary, corners, nodes, options);
       if (!best || better_face_mesh(in_space, *best)) best = std::move(in_space);

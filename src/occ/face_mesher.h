@@ -32,6 +32,9 @@ struct FaceMeshResult {
   std::string template_tree;
   bool used_projection = false;  // the 3D fallback was used
   long long inverted = 0;        // quads still inverted after repair
+  // Quads unfit for analysis (is_bad_quad): inverted, degenerate or folded.
+  // A face keeps none unless the user allows them (ShapeMeshOptions::allow_inverted).
+  long long bad = 0;
   long long collapsed = 0;       // quads with an edge under kCollapsedEdgeRatio of their longest
   long long off_surface = 0;     // quads cutting across the surface (kOffSurfaceRatio)
   double worst_corner = 1.0;     // lowest scaled Jacobian against the outer normal
@@ -73,8 +76,8 @@ constexpr double kOffSurfaceRatio = 0.25;
 // Measures a face's quads on its surface, into out: the scaled Jacobian of each quad
 // with every corner signed by the outer normal at that corner's node (at the quad's
 // centre where the surface is singular at the node), its lowest (worst_corner), the
-// quads below -kSurfaceInvertedBelow (inverted), the collapsed ones and those off the
-// surface. param: each local node's mesh coordinates, (u, v) or polar (x, y) when
+// quads below -kSurfaceInvertedBelow (inverted), the bad ones (is_bad_quad), the
+// collapsed ones and those off the surface. param: each local node's mesh coordinates, (u, v) or polar (x, y) when
 // `polar`; xyz: each local node's position. `surface`: the face's, from the caller
 // (each adaptor made computes the face's (u, v) bounds, a pass over every pcurve).
 void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surface, const std::vector<Vec3>& param,
@@ -85,8 +88,9 @@ void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surfac
                       const std::optional<PolarMap>& polar, const std::vector<Vec3>& xyz, std::vector<Vec3> normals,
                       FaceMeshResult& out);
 
-// Whether mesh a beats mesh b of the same face: fewer inverted quads, then fewer
-// collapsed ones (triangles in effect), then a better worst corner.
+// Whether mesh a beats mesh b of the same face: fewer bad quads (is_bad_quad), then
+// fewer inverted ones, then fewer collapsed ones (triangles in effect), then a better
+// worst corner.
 bool better_face_mesh(const FaceMeshResult& a, const FaceMeshResult& b);
 
 // The mean of a face mesh's per-quad scaled Jacobian (0 for no quad).

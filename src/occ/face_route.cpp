@@ -151,7 +151,7 @@ FaceMeshResult settle_natural_choice(const TopoDS_Face& face, bool seam, const s
   // promising in full), and the best after smoothing kept (the worst corner, then the
   // mean: variants differ here and there, and often share their worst quad).
   std::vector<FaceMeshResult>& others = choice.other_decompositions;
-  if (best.inverted == 0 && best.collapsed == 0 && best.worst_corner >= kSmoothVariantsBelow) others.clear();
+  if (best.bad == 0 && best.collapsed == 0 && best.worst_corner >= kSmoothVariantsBelow) others.clear();
   // Each looked at with a few passes, and the best of them smoothed in full.
   std::size_t promising = 0;
   std::optional<FaceMeshResult> promising_look;
@@ -186,8 +186,9 @@ FaceMeshResult settle_natural_choice(const TopoDS_Face& face, bool seam, const s
 //     kGoodEnoughCorner: the face decomposition (face_decomposed.h), any outline;
 //   - a disk around a pole: polar templates (no decomposition), and a cone's tip as
 //     the apex of its flattened sector (pole_sector).
-// The best mesh is kept and smoothed on the surface; inverted quads that remain refuse the face unless
-// allow_inverted (never a silent bad mesh).
+// The best mesh is kept and smoothed on the surface; bad quads that remain (inverted,
+// degenerate or folded: is_bad_quad) refuse the face unless allow_inverted
+// (never a silent bad mesh).
 FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary& boundary, const PoleSector* sector,
                               const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size) {
   const auto start = std::chrono::steady_clock::now();
@@ -275,7 +276,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     } catch (const std::exception&) {  // the decomposition without the search stands
     }
   };
-  if (decompose && (!best || best->inverted > 0 || best->collapsed > 0 || best->worst_corner < kGoodEnoughCorner)) {
+  if (decompose && (!best || best->bad > 0 || best->collapsed > 0 || best->worst_corner < kGoodEnoughCorner)) {
     try {
       std::vector<FaceMeshResult> decomposed =
           mesh_face_decomposed(index.face(f), f, boundary, nodes, index.vertex_count(), size, options.templates);
@@ -344,12 +345,12 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
   }
   best->meshing_seconds = meshing_seconds;
   if (options.smooth) best->smoothing_seconds = seconds_since(smoothing);
-  if (best->inverted > 0 && !options.allow_inverted) {
+  if (best->bad > 0 && !options.allow_inverted) {
     char worst[32];
     std::snprintf(worst, sizeof worst, "%.3g", best->worst_corner);
-    throw InvertedQuadsError(name + ": " + std::to_string(best->inverted) + " of " + std::to_string(best->quads.size()) +
-                                 " quads stay inverted after repair (worst corner " + worst + "; " +
-                                 best->template_tree.substr(0, 60) + ")",
+    throw InvertedQuadsError(name + ": " + std::to_string(best->bad) + " of " + std::to_string(best->quads.size()) +
+                                 " quads stay inverted, degenerate or folded after repair (worst corner " + worst +
+                                 " against the surface; " + best->template_tree.substr(0, 60) + ")",
                              best->quads.size(), has_quad_over_curvature(*best));
   }
   return std::move(*best);

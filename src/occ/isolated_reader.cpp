@@ -103,6 +103,7 @@ std::string shape_reply_from_child(const std::function<TopoDS_Shape()>& read, co
                                    const ReadLimits& limits) {
   int fds[2];
   if (pipe(fds) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+  const pid_t parent = getpid();
   const pid_t child = fork();
   if (child < 0) {
     close(fds[0]);
@@ -111,6 +112,11 @@ std::string shape_reply_from_child(const std::function<TopoDS_Shape()>& read, co
   }
   if (child == 0) {
     close(fds[0]);
+    // Killed when the forking thread ends, whatever ends it (a SIGKILL of the
+    // caller included); a parent already gone before the request took effect is
+    // seen as a new parent process.
+    prctl(PR_SET_PDEATHSIG, SIGKILL, 0, 0, 0);
+    if (getppid() != parent) _exit(4);
     run_reader(fds[1], read, limits);
   }
   close(fds[1]);
@@ -137,7 +143,7 @@ std::string shape_reply_from_child(const std::function<TopoDS_Shape()>& read, co
   }
   if (late) {
     char seconds[32];
-    std::snprintf(seconds, sizeof seconds, "%g", limits.seconds);
+    std::snprintf(seconds, sizeof seconds, "%.3g", limits.seconds);
     throw InputError(what + ": reading did not finish within " + seconds + " s (a damaged file?)");
   }
   if (WIFSIGNALED(status)) {
@@ -159,7 +165,8 @@ std::string shape_reply_from_child(const std::function<TopoDS_Shape()>& read, co
 }
 
 // The checks before a file is given to a reader process: InputError naming the file.
-void check_file_to_read(const std::string& path, const ReadLimits& limits) {
+// Returns its size in bytes.
+unsigned long long check_file_to_read(const std::string& path, const ReadLimits& limits) {
   struct stat info {};
   if (stat(path.c_str(), &info) != 0) throw InputError("cannot open '" + path + "'");
   if (!S_ISREG(info.st_mode)) throw InputError("'" + path + "' is not a regular file");
@@ -168,6 +175,7 @@ void check_file_to_read(const std::string& path, const ReadLimits& limits) {
                      std::to_string(limits.file_bytes));
   }
   if (info.st_size == 0 && is_shape_path(path)) throw InputError("'" + path + "' is empty");
+  return static_cast<unsigned long long>(info.st_size);
 }
 
 }  // namespace
@@ -193,13 +201,17 @@ ReadShape decode_shape_reply(const std::string& payload) {
 }
 
 std::string read_shape_reply(const std::string& path, const ReadLimits& limits) {
-  check_file_to_read(path, limits);
+  const unsigned long long bytes = check_file_to_read(path, limits);
   if (!is_shape_path(path)) read_shape(path);  // throws, naming the unknown format
-  return shape_reply_from_child([&] { return read_shape(path); }, "'" + path + "'", limits);
+  ReadLimits used = limits;
+  if (used.seconds <= 0) used.seconds = default_read_seconds(bytes);
+  return shape_reply_from_child([&] { return read_shape(path); }, "'" + path + "'", used);
 }
 
 std::string read_brep_text_reply(const std::string& brep, const ReadLimits& limits) {
-  return shape_reply_from_child([&] { return read_brep_text(brep); }, "the BREP text", limits);
+  ReadLimits used = limits;
+  if (used.seconds <= 0) used.seconds = default_read_seconds(brep.size());
+  return shape_reply_from_child([&] { return read_brep_text(brep); }, "the BREP text", used);
 }
 
 ReadShape read_shape_isolated(const std::string& path, const ReadLimits& limits) {

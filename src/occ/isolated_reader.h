@@ -5,7 +5,9 @@
 // of shipped examples made them crash (SIGSEGV inside the STEP transfer, a trimmed
 // curve with no basis in a BREP), abort, or loop for ever (a huge curve count),
 // taking the process along, which inside FreeCAD is the user's session. Here the
-// file is read by a forked child under a memory limit and a deadline; it sends the
+// file is read by a forked child under a memory limit and a deadline, which dies
+// with the thread that forked it (PR_SET_PDEATHSIG: a caller killed, by any signal,
+// leaves no reader running); it sends the
 // shape back as binary BREP (OpenCASCADE's own writer, read back in the parent) or
 // its InputError message, with the faces the geometry checker finds invalid. A crash, an abort, a memory overrun or the deadline becomes
 // an InputError naming the file; nothing else of the child survives.
@@ -23,8 +25,21 @@ namespace tquad {
 inline constexpr double kMinReadSeconds = 0.001;
 inline constexpr double kMaxReadSeconds = 1e6;
 
+// The reader's default deadline grows with the input: kReadSecondsBase plus
+// kReadSecondsPerMegabyte per megabyte (10^6 bytes). Reading takes about a second
+// per megabyte of STEP here, so a sound file has some thirty times the time it needs,
+// and a damaged small file that sends the reader into a loop is refused within
+// about half a minute, not five.
+inline constexpr double kReadSecondsBase = 30;
+inline constexpr double kReadSecondsPerMegabyte = 30;
+// The default deadline for an input of `bytes` bytes.
+inline double default_read_seconds(unsigned long long bytes) {
+  return kReadSecondsBase + kReadSecondsPerMegabyte * static_cast<double>(bytes) / 1e6;
+}
+
 struct ReadLimits {
-  double seconds = 300;                          // wall time for reading
+  // Wall time for reading; 0: default_read_seconds of the input's size.
+  double seconds = 0;
   unsigned long long memory_bytes = 16ULL << 30;  // address space of the reader
   unsigned long long file_bytes = 4ULL << 30;     // larger input files are refused
 };

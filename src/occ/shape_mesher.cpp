@@ -56,10 +56,11 @@ Box3 checked_shape_box(const TopoDS_Shape& shape) {
   return result;
 }
 
-// An area estimate may undercount (edges refined for curvature or small faces give
-// more quads than area / size^2): a shape is refused up front only when even this
-// many times the limit is expected; the running total while meshing is exact.
-constexpr double kEstimateOverLimit = 2.0;
+// The area estimate mostly undercounts (edges refined for curvature and small faces
+// give more quads than area / size^2) and overcounts little (a face's quads cover
+// its area with sides near the size): a shape whose estimate is over the limit is refused before meshing, since meshing
+// it would take minutes and gigabytes only to be refused by the exact running total.
+constexpr double kEstimateOverLimit = 1.0;
 
 // About how many quads the faces take at `size`: each face's area / size^2 (a square
 // grid of that size). A face whose area OpenCASCADE cannot integrate counts 0 here.
@@ -422,6 +423,7 @@ class ShapeMeshContext {
       mesh.faces.push_back({f, m.template_tree, first, static_cast<std::int64_t>(m.quads.size()), m.corner_search});
       result_.projected_faces += m.used_projection ? 1 : 0;
       result_.inverted += m.inverted;
+      if (m.bad > 0) result_.bad_quad_faces.emplace_back(f, m.bad);
       result_.off_surface += m.off_surface;
       result_.template_seconds += m.template_seconds;
       result_.placement_seconds += m.placement_seconds;

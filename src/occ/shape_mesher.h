@@ -84,8 +84,9 @@ struct ShapeMeshOptions {
   int order = 1;
   // Mesh the other faces when one is refused (and list it); otherwise refuse all.
   bool keep_going = false;
-  // Keep a face whose mesh still has inverted quads after repair (counted in
-  // ShapeMeshResult::inverted) instead of refusing it.
+  // Keep a face whose mesh still has bad quads after repair (inverted, degenerate or
+  // folded: is_bad_quad; listed in ShapeMeshResult::bad_quad_faces) instead of
+  // refusing it.
   bool allow_inverted = false;
   // Join faces that touch without sharing their edge before meshing (face_sewing.h),
   // so the mesh is connected there; face numbers stay the shape's.
@@ -104,6 +105,9 @@ struct ShapeMeshResult {
   std::vector<IntervalChange> changes;   // edge counts changed by the interval assignment
   long long projected_faces = 0;         // faces meshed by the 3D route
   long long inverted = 0;                // quads still inverted after repair
+  // With allow_inverted: each face kept with bad quads (is_bad_quad: inverted,
+  // degenerate or folded), as {face, bad quads}; without it such faces are refused.
+  std::vector<std::pair<int, long long>> bad_quad_faces;
   std::map<std::string, double> stage_seconds;  // wall time per stage, summed over rounds
   long long off_surface = 0;             // quads cutting across their surface (face_mesher.h)
   int refinement_rounds = 0;            // times small faces' edges were doubled

@@ -41,7 +41,7 @@ FaceMeshResult without_nodes_and_quads(FaceMeshResult& source) {
 // D/50, 0.011 -> 0.052 on part.step at D/50).
 constexpr double kTurnGain = 0.05;
 bool turned_is_better(const FaceMeshResult& turned, const FaceMeshResult& incumbent) {
-  if (turned.inverted != incumbent.inverted || turned.collapsed != incumbent.collapsed) {
+  if (turned.bad != incumbent.bad || turned.inverted != incumbent.inverted || turned.collapsed != incumbent.collapsed) {
     return better_face_mesh(turned, incumbent);
   }
   const double gain = turned.worst_corner - incumbent.worst_corner;

@@ -202,7 +202,8 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
   if (!(min_size >= 0) || !std::isfinite(min_size)) {
     throw InputError("min_size must be a finite number of 0 (no floor) or more, not " + std::to_string(min_size));
   }
-  if (!(read_timeout >= kMinReadSeconds && read_timeout <= kMaxReadSeconds)) {
+  // 0: the default, scaled to the input's size (isolated_reader.h).
+  if (read_timeout != 0 && !(read_timeout >= kMinReadSeconds && read_timeout <= kMaxReadSeconds)) {
     throw InputError("read_timeout must be between 0.001 and 1e6 seconds, not " + std::to_string(read_timeout));
   }
   ReadLimits limits;
@@ -250,6 +251,14 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
   for (const UnsewnEdgePair& p : result.unsewn_edges) unsewn.append(py::make_tuple(p.first, p.second));
   out["unsewn_edge_pairs"] = unsewn;
   out["sewn_edges"] = result.sewn_edges;
+  py::list bad_faces;
+  for (const auto& [face, count] : result.bad_quad_faces) {
+    py::dict d;
+    d["face"] = face;
+    d["quads"] = count;
+    bad_faces.append(d);
+  }
+  out["bad_quad_faces"] = bad_faces;
   return out;
 }
 

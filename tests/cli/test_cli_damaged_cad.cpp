@@ -4,8 +4,23 @@
 // The damaged files are made here from the shipped examples by the edits named in
 // each test (found by random one-byte edits: each crashed or hung the reader in the
 // same process before).
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRep_Builder.hxx>
+#include <STEPControl_Writer.hxx>
+#include <TopoDS_Compound.hxx>
+#include <gp_Pnt.hxx>
+
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -163,6 +178,62 @@ TEST_F(DamagedCad, TheReadTimeoutRefusesASlowReadAndIsChecked) {
   EXPECT_NE(r.err.find("did not finish within 0.001 s"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(path("out.vtu")));
   EXPECT_EQ(run_tquad({"mesh", file, "-o", path("out.vtu"), "--read-timeout", "-1"}).exit_status, 2);
+}
+
+// The children of process `pid` (Linux's /proc task children list).
+std::vector<pid_t> children_of(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/task/" + std::to_string(pid) + "/children");
+  std::vector<pid_t> out;
+  for (pid_t c; in >> c;) out.push_back(c);
+  return out;
+}
+
+// Whether process `pid` still runs: it exists and is no zombie.
+bool running(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(in, line)) return false;
+  const auto close = line.rfind(')');  // the state follows the command's name
+  return close != std::string::npos && close + 2 < line.size() && line[close + 2] != 'Z';
+}
+
+TEST_F(DamagedCad, AKilledCommandLeavesNoReaderRunning) {
+  // A STEP file of 500 boxes takes the reader about three seconds (a second for 150
+  // here): the command is killed as soon as its reader child is seen, and the reader
+  // must be gone well before it could have finished reading.
+  TopoDS_Compound boxes;
+  BRep_Builder builder;
+  builder.MakeCompound(boxes);
+  for (int i = 0; i < 500; ++i) {
+    builder.Add(boxes, BRepPrimAPI_MakeBox(gp_Pnt(2.0 * (i % 25), 2.0 * (i / 25), 0), 1, 1, 1).Shape());
+  }
+  STEPControl_Writer writer;
+  writer.Transfer(boxes, STEPControl_AsIs);
+  const std::string file = path("boxes.step");
+  ASSERT_EQ(writer.Write(file.c_str()), IFSelect_RetDone);
+  const std::string out = path("out.vtu"), exe = TQUAD_EXE;
+  std::vector<std::string> args{exe, "mesh", file, "-o", out};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t command = 0;
+  ASSERT_EQ(posix_spawn(&command, exe.c_str(), nullptr, nullptr, argv.data(), environ), 0);
+  std::vector<pid_t> readers;
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (readers.empty() && std::chrono::steady_clock::now() < give_up && running(command)) {
+    readers = children_of(command);
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ASSERT_FALSE(readers.empty()) << "the command's reader process was not seen";
+  kill(command, SIGKILL);
+  int status = 0;
+  waitpid(command, &status, 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(500);
+  while (running(readers.front()) && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  EXPECT_FALSE(running(readers.front())) << "reader " << readers.front() << " outlived its killed command";
+  EXPECT_FALSE(fs::exists(out));
 }
 
 TEST_F(DamagedCad, TheGoodExampleStillReadsThroughTheChild) {

@@ -116,6 +116,22 @@ class MeshShapeTest(unittest.TestCase):
             tquad.mesh_shape(path, size=5.0, min_size=6.0)
         with self.assertRaisesRegex(ValueError, "min_size must be a finite number"):
             tquad.mesh_shape(path, min_size=float("nan"))
+        # What the command line refuses is refused here, not converted: a corner of
+        # 4.5 or '4', a face '0', threads -1, order 3.
+        for options, message in (({"corners": {0: [0, 4.5, 8, 12]}}, "corner of face 0 must be an integer"),
+                                 ({"corners": {0: [0, "4", 8, 12]}}, "corner of face 0 must be an integer"),
+                                 ({"faces": ["0"]}, "face must be an integer"),
+                                 ({"threads": -1}, "threads must be between 0 and 1024"),
+                                 ({"threads": 2.0}, "threads must be an integer"),
+                                 ({"order": 3}, "order must be between 1 and 2"),
+                                 ({"max_quads": 0}, "max_quads must be at least 1")):
+            with self.assertRaisesRegex(ValueError, message, msg=str(options)):
+                tquad.mesh_shape(path, **options)
+        with self.assertRaisesRegex(ValueError, "corner must be an integer"):
+            tquad.mesh_boundary(np.array(square(2, 2, 2, 2)[0]), [0, 2, 4.5, 6])
+        # An empty point list is refused, not a crash of the interpreter.
+        with self.assertRaisesRegex(ValueError, "0 points"):
+            tquad.mesh_boundary(np.zeros((0, 3)), [])
         with tempfile.TemporaryDirectory() as folder:
             garbage = os.path.join(folder, "garbage.brep")
             with open(garbage, "w") as f:

@@ -8,6 +8,7 @@
 Wrong input raises ValueError with the message the command line would print; the
 message names the face, edge, vertex, point or curve at fault.
 """
+import numbers
 from typing import Callable, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -24,7 +25,7 @@ FacesRefused = _core.FacesRefused
 #: The ``code`` of a refused face, and what it means.
 REFUSAL_CODES = {
     "cannot_mesh": "no meshing route gave a valid mesh (the reason says what failed)",
-    "inverted_quads": "every mesh found keeps inverted quads on the surface",
+    "inverted_quads": "every mesh found keeps inverted, degenerate or folded quads",
     "too_coarse": "too few boundary segments; a smaller element size gives it more",
     "not_supported": "a kind of face the mesher does not handle yet",
     "damaged": "the face's geometry is invalid",
@@ -34,6 +35,27 @@ REFUSAL_CODES = {
 __all__ = ["Cancelled", "FacesRefused", "Mesh", "REFUSAL_CODES", "mesh_boundary", "mesh_shape"]
 
 _MAX_QUADS = 100_000_000
+
+
+def _integer(value, what: str, low: Optional[int] = None, high: Optional[int] = None) -> int:
+    """`value` as an int when it is an integer (Python's or numpy's) within [low, high];
+    ValueError naming `what` otherwise. A float (4.5, or 4.0), a string ('4') or a bool
+    is refused, as the command line refuses it, rather than silently converted."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise ValueError("%s must be an integer, not %r" % (what, value))
+    number = int(value)
+    if (low is not None and number < low) or (high is not None and number > high):
+        bounds = ("at least %d" % low if high is None else
+                  "at most %d" % high if low is None else "between %d and %d" % (low, high))
+        raise ValueError("%s must be %s, not %d" % (what, bounds, number))
+    return number
+
+
+def _template_integers(t4_ratio, t5_cut_edges, max_quads) -> Tuple[int, int, int]:
+    """The template options as integers; the mesher checks their ranges (the T4
+    ratio's message cites the paper), max_quads's lower bound is checked here."""
+    return (_integer(t4_ratio, "t4_ratio"), _integer(t5_cut_edges, "t5_cut_edges"),
+            _integer(max_quads, "max_quads", 1))
 
 
 class Mesh:
@@ -70,6 +92,10 @@ class Mesh:
             is not connected along them (``sew=True`` joins them).
         sewn_edges: for a shape meshed with ``sew=True``, the edges merged into
             their neighbours; else 0.
+        bad_quad_faces: for a shape meshed with ``allow_inverted=True``, the faces
+            kept with inverted, degenerate or folded quads (a corner's scaled
+            Jacobian at or below 1e-6 against the surface normal or the quad's
+            own): dicts ``face``, ``quads``. Without it such faces are refused.
     """
 
     def __init__(self, data: dict):
@@ -82,6 +108,7 @@ class Mesh:
         self.changed_edges: List[dict] = data.get("changed_edges", [])
         self.unsewn_edge_pairs: List[Tuple[int, int]] = data.get("unsewn_edge_pairs", [])
         self.sewn_edges: int = data.get("sewn_edges", 0)
+        self.bad_quad_faces: List[dict] = data.get("bad_quad_faces", [])
         self.scaled_jacobian: np.ndarray = data["scaled_jacobian"]
         self.lee_lo: np.ndarray = data["lee_lo"]
         self.mid_nodes: Optional[np.ndarray] = data.get("mid_nodes")
@@ -139,8 +166,9 @@ def mesh_boundary(points, corners: Sequence[int], *, t4_ratio: int = 2,
         ValueError: the boundary cannot be meshed (the message says why and where).
     """
     array = np.asarray(points, dtype=np.float64)
-    return Mesh(_core.mesh_boundary(array, [int(c) for c in corners], int(t4_ratio),
-                                    int(t5_cut_edges), int(max_quads), bool(smooth), bool(best_corners)))
+    corner_list = [_integer(c, "corner") for c in corners]
+    return Mesh(_core.mesh_boundary(array, corner_list, *_template_integers(t4_ratio, t5_cut_edges, max_quads),
+                                    bool(smooth), bool(best_corners)))
 
 
 def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
@@ -150,7 +178,7 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
                t4_ratio: int = 2, t5_cut_edges: int = 0,
                max_quads: int = _MAX_QUADS, smooth: bool = True,
                progress: Optional[Callable[[str, int, int], Optional[bool]]] = None,
-               read_timeout: float = 300.0, best_corners: bool = False,
+               read_timeout: Optional[float] = None, best_corners: bool = False,
                min_size: float = 0.0, order: int = 1, sew: bool = False) -> Mesh:
     """Mesh the faces of a CAD shape, conforming across shared edges.
 
@@ -166,7 +194,9 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
         corners: per face index, the shape vertex indices where its curves begin.
         keep_going: mesh the other faces when one is refused (listed in
             ``refused_faces``); otherwise a refused face raises ValueError.
-        allow_inverted: keep a face whose quads stay inverted after repair.
+        allow_inverted: keep a face whose quads stay inverted, degenerate or
+            folded after repair (listed in ``bad_quad_faces``) instead of
+            refusing it.
         threads: threads meshing faces; 0 uses all cores (same output either way).
         t4_ratio, t5_cut_edges, max_quads: as for mesh_boundary.
         smooth: smooth each face's mesh on its surface (interior nodes move where
@@ -176,7 +206,7 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
             "assemble") and after each face; returning True (or raising) cancels.
         read_timeout: seconds the reader (a child process, so that a damaged file
             cannot take the interpreter down) may take before the input is refused
-            as damaged.
+            as damaged; None: 30 s plus 30 s per megabyte of the input.
         best_corners: on each face without ``corners``, also try other corner
             sets (of the face when it has no holes, and of each poor patch of its
             decomposition) and keep the best worst, then mean, scaled Jacobian;
@@ -195,10 +225,12 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
             ``refused_faces`` lists them).
         ValueError: unreadable shape or bad options.
     """
-    face_list = [int(f) for f in faces] if faces is not None else []
-    corner_map: Dict[int, List[int]] = {int(k): [int(v) for v in vs] for k, vs in (corners or {}).items()}
+    face_list = [_integer(f, "face") for f in faces] if faces is not None else []
+    corner_map: Dict[int, List[int]] = {
+        _integer(k, "corners' face"): [_integer(v, "corner of face %s" % k) for v in vs]
+        for k, vs in (corners or {}).items()}
     return Mesh(_core.mesh_shape(str(brep_text_or_path), float(size), face_list, corner_map,
-                                 bool(keep_going), bool(allow_inverted), int(threads),
-                                 int(t4_ratio), int(t5_cut_edges), int(max_quads), bool(smooth),
-                                 progress, float(read_timeout), bool(best_corners),
-                                 float(min_size), int(order), bool(sew)))
+                                 bool(keep_going), bool(allow_inverted), _integer(threads, "threads", 0, 1024),
+                                 *_template_integers(t4_ratio, t5_cut_edges, max_quads), bool(smooth),
+                                 progress, 0.0 if read_timeout is None else float(read_timeout),
+                                 bool(best_corners), float(min_size), _integer(order, "order", 1, 2), bool(sew)))

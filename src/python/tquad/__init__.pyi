@@ -19,6 +19,8 @@ class Mesh:
     edge_size: Optional[float]
     changed_edges: List[dict]
     unsewn_edge_pairs: List[Tuple[int, int]]
+    sewn_edges: int
+    bad_quad_faces: List[dict]
     scaled_jacobian: np.ndarray
     lee_lo: np.ndarray
     mid_nodes: Optional[np.ndarray]
@@ -38,5 +40,5 @@ def mesh_shape(brep_text_or_path: str, *, size: float = ..., faces: Optional[Ite
                allow_inverted: bool = ..., threads: int = ..., t4_ratio: int = ...,
                t5_cut_edges: int = ..., max_quads: int = ..., smooth: bool = ...,
                progress: Optional[Callable[[str, int, int], Optional[bool]]] = ...,
-               read_timeout: float = ..., best_corners: bool = ...,
+               read_timeout: Optional[float] = ..., best_corners: bool = ...,
                min_size: float = ..., order: int = ...) -> Mesh: ...
