@@ -185,6 +185,8 @@ void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surfac
   const bool reversed = face.Orientation() == TopAbs_REVERSED;
   const auto to_uv = [&](const Vec3& p) { return polar ? polar_to_uv(*polar, p) : p; };
   const bool planar = surface.GetType() == GeomAbs_Plane;
+  const double u_period = !polar && surface.IsUPeriodic() ? surface.UPeriod() : 0;
+  const double v_period = !polar && surface.IsVPeriodic() ? surface.VPeriod() : 0;
   out.param = param;
   out.polar = polar;
   // Each corner is checked against the normal at its own node, so a quad warped on a
@@ -200,7 +202,12 @@ void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surfac
     Vec3 centre, centre_param, mean_normal;
     for (int i = 0; i < 4; ++i) {
       centre += 0.25 * corner[i];
-      centre_param += 0.25 * param[q[i]];
+      // On a periodic surface a quad may straddle the seam: each corner's (u, v) is
+      // taken within half a period of the first corner's, so the centre lies in the quad.
+      Vec3 p = param[q[i]];
+      if (u_period > 0) p.x -= u_period * std::round((p.x - param[q[0]].x) / u_period);
+      if (v_period > 0) p.y -= v_period * std::round((p.y - param[q[0]].y) / v_period);
+      centre_param += 0.25 * p;
       mean_normal += normals[q[i]];
     }
     std::optional<Vec3> centre_normal;  // evaluated only where a node's normal is singular

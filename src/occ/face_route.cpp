@@ -21,6 +21,7 @@
 #include "occ/face_corners.h"
 #include "occ/face_decomposed.h"
 #include "occ/face_mesh_closure.h"
+#include "occ/pole_to_pole.h"
 #include "occ/surface_smoothing.h"
 
 namespace tquad {
@@ -177,6 +178,18 @@ FaceMeshResult settle_natural_choice(const TopoDS_Face& face, bool seam, const s
   return std::move(best);
 }
 
+// The one policy for bad quads (is_bad_quad): a face keeping any is refused, unless
+// the user allows them.
+void refuse_bad_quads(const FaceMeshResult& mesh, const std::string& name, const ShapeMeshOptions& options) {
+  if (mesh.bad == 0 || options.allow_inverted) return;
+  char worst[32];
+  std::snprintf(worst, sizeof worst, "%.3g", mesh.worst_corner);
+  throw InvertedQuadsError(name + ": " + std::to_string(mesh.bad) + " of " + std::to_string(mesh.quads.size()) +
+                               " quads stay inverted, degenerate or folded after repair (worst corner " + worst +
+                               " against the surface; " + mesh.template_tree.substr(0, 60) + ")",
+                           mesh.quads.size(), has_quad_over_curvature(mesh));
+}
+
 // The face's mesh, the one place where the algorithm per face is chosen:
 //   - no hole: the templates on each corner choice (face_corners.h), and for a disk
 //     (one smooth loop) the disk's O-grid (disk_o_grid.h);
@@ -185,7 +198,8 @@ FaceMeshResult settle_natural_choice(const TopoDS_Face& face, bool seam, const s
 //   - more holes, or when the above leave inverted quads or a worst corner under
 //     kGoodEnoughCorner: the face decomposition (face_decomposed.h), any outline;
 //   - a disk around a pole: polar templates (no decomposition), and a cone's tip as
-//     the apex of its flattened sector (pole_sector).
+//     the apex of its flattened sector (pole_sector);
+//   - closed around two poles (a full sphere): the cube sphere (pole_to_pole.h).
 // The best mesh is kept and smoothed on the surface; bad quads that remain (inverted,
 // degenerate or folded: is_bad_quad) refuse the face unless allow_inverted
 // (never a silent bad mesh).
@@ -200,6 +214,14 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     refusal = e.what();
     refusal_code = refusal_code_of(e);
   };
+  if (closed_seam_edge(index, f) >= 0) {
+    // Closed around two poles: the cube sphere, the one layout without a corner of
+    // 180 degrees at a pole (pole_to_pole.h).
+    FaceMeshResult sphere = mesh_pole_to_pole(index.face(f), f, boundary, nodes);
+    sphere.meshing_seconds = seconds_since(start);
+    refuse_bad_quads(sphere, name, options);
+    return sphere;
+  }
   const bool pole = boundary.has_degenerate_edge || boundary.polar;
   // Around a smooth pole (a sphere's) the face is decomposed in polar (x, y), holes
   // and all; a cone's tip must stay a node, which only the disk routes make sure of.
@@ -345,14 +367,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
   }
   best->meshing_seconds = meshing_seconds;
   if (options.smooth) best->smoothing_seconds = seconds_since(smoothing);
-  if (best->bad > 0 && !options.allow_inverted) {
-    char worst[32];
-    std::snprintf(worst, sizeof worst, "%.3g", best->worst_corner);
-    throw InvertedQuadsError(name + ": " + std::to_string(best->bad) + " of " + std::to_string(best->quads.size()) +
-                                 " quads stay inverted, degenerate or folded after repair (worst corner " + worst +
-                                 " against the surface; " + best->template_tree.substr(0, 60) + ")",
-                             best->quads.size(), has_quad_over_curvature(*best));
-  }
+  refuse_bad_quads(*best, name, options);
   return std::move(*best);
 }
 
@@ -364,7 +379,7 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
   try {
     outcome.boundary = face_boundary(index, f, edges, nodes);
     std::optional<PoleSector> sector;
-    if (is_disk_around_pole(outcome.boundary)) {
+    if (is_disk_around_pole(outcome.boundary) && closed_seam_edge(index, f) < 0) {
       sector = pole_sector(outcome.boundary, index.face(f));
       outcome.boundary = around_pole(outcome.boundary, index.face(f), f, nodes);
     }

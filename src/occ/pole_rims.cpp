@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "occ/face_boundary.h"
+#include "occ/pole_to_pole.h"
 
 namespace tquad {
 
@@ -49,6 +50,20 @@ int quarter_pole_rims(const ShapeIndex& index, const std::vector<char>& meshed, 
   int changed = 0;
   for (int f = 0; f < index.face_count(); ++f) {
     if (!meshed[f]) continue;
+    // A face closed around two poles takes the cube sphere, whose seam has 2m
+    // segments, m even (pole_to_pole.h): its seam's count, in no other face, goes to
+    // the nearest multiple of 4 at or above its floor, 4 at least.
+    const int seam = closed_seam_edge(index, f);
+    if (seam >= 0) {
+      const int low = std::max(4, floors[seam]);
+      int count = 4 * static_cast<int>(std::lround(segments[seam] / 4.0));
+      while (count < low) count += 4;
+      if (count != segments[seam]) {
+        segments[seam] = count;
+        ++changed;
+      }
+      continue;
+    }
     const std::vector<int> rim = pole_rim_edges(index, f);
     int total = 0;
     for (int e : rim) total += segments[e];

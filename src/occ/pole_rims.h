@@ -23,6 +23,7 @@ namespace tquad {
 
 constexpr double kQuarterRimFrom = 150.0 * M_PI / 180.0;
 
+// A face closed around two poles (pole_to_pole.h) gets a multiple of 4 on its seam.
 // goals: per edge, its length / size; floors: per edge, the least count. The change
 // of each rim is the one of +2 or -2, on one of its units, that moves counts least
 // from their goals. Returns the number of rims changed.

@@ -27,6 +27,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_test_support.h"
+#include "generated_parts.h"
 
 namespace tquad::cli_test {
 namespace {
@@ -623,8 +624,8 @@ TEST_F(ShapeCli, SvgOutputIsRefusedForCadInput) {
 
 // ---- --keep-going on a real part ---------------------------------------------------
 
-// A whole sphere (face 0: no edge but its seam and two poles, always refused) next
-// to a box (faces 1 to 6).
+// A drilled cone (generated_parts.h: its side face, with a pole and a hole, is
+// refused) next to a box.
 class KeepGoing : public ShapeCli {
  protected:
   void SetUp() override {
@@ -632,16 +633,16 @@ class KeepGoing : public ShapeCli {
     BRep_Builder builder;
     TopoDS_Compound both;
     builder.MakeCompound(both);
-    builder.Add(both, BRepPrimAPI_MakeSphere(10.0).Shape());
+    builder.Add(both, drilled_cone(0, 0, 0));
     builder.Add(both, BRepPrimAPI_MakeBox(gp_Pnt(30, 0, 0), 10, 10, 10).Shape());
-    part_ = path("sphere_and_box.brep");
+    part_ = path("cone_and_box.brep");
     ASSERT_TRUE(BRepTools::Write(both, part_.c_str()));
   }
   std::string part_;
 };
 
 TEST_F(KeepGoing, WithoutItARefusedFaceStopsTheJob) {
-  expect_refused(part_, {}, {"face(s) refused", "face 0", "--keep-going"});
+  expect_refused(part_, {}, {"face(s) refused", "has a hole and a pole", "--keep-going"});
 }
 
 TEST_F(KeepGoing, WithItTheOtherFacesAreMeshedAndTheRefusedListed) {

@@ -24,6 +24,8 @@ import unittest
 import FreeCAD
 import Part
 
+from refused_face import drilled_cone_face
+
 WIDTH, HOLE_D, THICKNESS, FORCE = 60.0, 20.0, 1.0, 1000.0
 BOLT_D, YOUNG = 10.0, 210000.0
 HOLE_CENTRE = (50.0, 30.0)
@@ -136,13 +138,12 @@ class PlateWithHoleTest(unittest.TestCase):
         self.assertLess(to_hole, 1e-3, "the peak stress sits on a hole edge")
 
     def test_a_mesh_with_a_refused_face_stops_the_solver(self):
-        """A face the mesher refuses (a whole sphere) beside the plate: with KeepGoing
+        """A face the mesher refuses (a drilled cone's side) beside the plate: with KeepGoing
         the plate is meshed, and both CalculiX checks (ccxtools' prerequisites and the
         solver object's Check task) stop, naming the face, until AcceptIncomplete."""
         from femtools import ccxtools, checksanalysis, membertools
 
-        sphere = Part.makeSphere(5, FreeCAD.Vector(50, 300, 0))
-        shape = Part.makeCompound([Part.makePlane(100, WIDTH), sphere.Faces[0]])
+        shape = Part.makeCompound([Part.makePlane(100, WIDTH), drilled_cone_face(50, 300, 0)])
         analysis, solver, mesh = self._analysis(shape, keep_going=True)
         self.assertTrue(mesh.Incomplete)
         self.assertEqual(list(mesh.RefusedFaceNames), ["Face2"])
@@ -240,8 +241,7 @@ class EverySolverCheckTest(unittest.TestCase):
         from freecad.templatequad import make_mesh
 
         part = self.doc.addObject("Part::Feature", "Plate")
-        sphere = Part.makeSphere(5, FreeCAD.Vector(50, 300, 0))  # a face the mesher refuses
-        part.Shape = Part.makeCompound([Part.makePlane(100, WIDTH), sphere.Faces[0]])
+        part.Shape = Part.makeCompound([Part.makePlane(100, WIDTH), drilled_cone_face(50, 300, 0)])  # one refused
         analysis = ObjectsFem.makeAnalysis(self.doc, "Analysis")
         mesh = make_mesh(self.doc, part, size=10.0, keep_going=True)
         analysis.addObject(mesh)

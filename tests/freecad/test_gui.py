@@ -10,6 +10,8 @@ import unittest
 import FreeCAD
 import FreeCADGui
 import Part
+
+from refused_face import drilled_cone_face
 from PySide import QtGui
 
 COMMAND = "TemplateQuad_Mesh"
@@ -102,10 +104,10 @@ class WorkbenchGuiTest(unittest.TestCase):
         self.assertEqual(mesh.FemMesh.QuadrangleCount, mesh.FemMesh.FaceCount, "all quads")
 
     def test_a_click_meshes_what_it_can_and_selects_the_faces_it_could_not(self):
-        sphere = Part.makeSphere(10)  # a face the mesher does not handle
+        cone = drilled_cone_face()  # a face the mesher does not handle
         square = Part.makePlane(20, 20, FreeCAD.Vector(200, 0, 0))
-        part, mesh = self._click_mesh("SphereAndSquare", Part.makeCompound(sphere.Faces + [square]))
-        self.assertTrue(mesh.Incomplete, "the square is meshed, the sphere is not")
+        part, mesh = self._click_mesh("ConeAndSquare", Part.makeCompound([cone, square]))
+        self.assertTrue(mesh.Incomplete, "the square is meshed, the drilled cone is not")
         self.assertEqual(list(mesh.RefusedFaceNames), ["Face1"])
         self.assertEqual(mesh.FemMesh.QuadrangleCount, mesh.FemMesh.FaceCount)
         self.assertGreater(mesh.FemMesh.FaceCount, 0)

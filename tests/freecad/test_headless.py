@@ -12,6 +12,8 @@ import unittest
 import FreeCAD
 import Part
 
+from refused_face import drilled_cone_face
+
 
 def _add_part(doc, shape, name):
     """A Part feature holding `shape`, recomputed."""
@@ -295,9 +297,9 @@ class MeshObjectTest(unittest.TestCase):
 
     def test_refused_face_is_reported_and_keep_going_meshes_the_rest(self):
         from freecad.templatequad import make_mesh
-        sphere = Part.makeSphere(10)  # one face: no edge but its seam and two poles
+        cone = drilled_cone_face()  # a pole and a hole: refused
         square = Part.makePlane(20, 20, FreeCAD.Vector(200, 0, 0))
-        part = self._part(Part.makeCompound(sphere.Faces + [square]), "SphereAndSquare")
+        part = self._part(Part.makeCompound([cone, square]), "ConeAndSquare")
         with self.assertRaises(ValueError, msg="a refused face without KeepGoing") as caught:
             make_mesh(self.doc, part, size=5.0)
         error = str(caught.exception)
@@ -312,7 +314,7 @@ class MeshObjectTest(unittest.TestCase):
             mesh = make_mesh(self.doc, part, size=5.0, keep_going=True)
         finally:
             FreeCAD.Console.PrintWarning = print_warning
-        self.assertTrue(any("SphereAndSquare Face1: " in w and "(not meshed)" in w for w in warnings),
+        self.assertTrue(any("ConeAndSquare Face1: " in w and "(not meshed)" in w for w in warnings),
                         f"the refused face is reported in the report view: {warnings}")
         self.assertEqual(list(mesh.RefusedFaceNames), ["Face1"], "the refused face, by name")
         self.assertTrue(mesh.Incomplete, "a mesh with a refused face is incomplete")
@@ -503,7 +505,7 @@ class BadInputInFreeCadTest(unittest.TestCase):
     def test_bad_shapes_and_parameters_leave_the_document_as_it_was(self):
         box = self._part(Part.makeBox(100, 60, 10), "Box")
         wire = self._part(Part.Wire(Part.makeCircle(10)), "Circle")
-        sphere = self._part(Part.makeSphere(10), "Sphere")  # its one face is refused
+        cone = self._part(drilled_cone_face(), "DrilledCone")  # its one face is refused
         cases = [
             ("a Part with no face", wire, ["has no faces to mesh"], {}),
             ("size 1e-7 on a 100 mm box", box, ["segments", "the size is too small"], {"size": 1e-7}),
@@ -512,7 +514,7 @@ class BadInputInFreeCadTest(unittest.TestCase):
             ("a face that does not exist", box, ["does not exist"], {"faces": ["Face99"]}),
             ("a corner vertex that does not exist", box, ["does not exist"], {"corners": ["Face1:Vertex99,Vertex1"]}),
             ("one corner", box, ["2, 3 or 4 corners"], {"corners": ["Face1:Vertex1"]}),
-            ("every face refused, keep going", sphere, ["no face"], {"keep_going": True}),
+            ("every face refused, keep going", cone, ["no face"], {"keep_going": True}),
         ]
         for name, part, expect, options in cases:
             with self.subTest(name):

@@ -9,6 +9,7 @@
 #include <BRepFilletAPI_MakeChamfer.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
@@ -174,6 +175,13 @@ bool write_generated_part(std::uint32_t seed, const std::string& brep_path) {
   while (::waitpid(child, &status, 0) < 0) {
   }
   return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+TopoDS_Shape drilled_cone(double x, double y, double z) {
+  const TopoDS_Shape cone = BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(x, y, z), gp_Dir(0, 0, 1)), 0.0, 5.0, 10.0).Shape();
+  const TopoDS_Shape drill =
+      BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x - 10, y, z + 6), gp_Dir(1, 0, 0)), 1.0, 20.0).Shape();
+  return BRepAlgoAPI_Cut(cone, drill).Shape();
 }
 
 }  // namespace tquad

@@ -21,4 +21,9 @@ TopoDS_Shape generated_part(std::uint32_t seed);
 // nothing. The test process lives on either way.
 bool write_generated_part(std::uint32_t seed, const std::string& brep_path);
 
+// A solid cone from its tip at (x, y, z) (radius 5 at height 10 above it), with a hole of
+// radius 1 drilled across it at height 6: its side face has a pole and a hole, a face
+// the mesher refuses (not_supported), the tests' example of a refused face.
+TopoDS_Shape drilled_cone(double x, double y, double z);
+
 }  // namespace tquad

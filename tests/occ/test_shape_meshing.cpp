@@ -22,6 +22,12 @@
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
+#include <GeomAbs_SurfaceType.hxx>
+#include <Geom_Ellipse.hxx>
+#include <Geom_TrimmedCurve.hxx>
+#include <gp_Elips.hxx>
+#include <gp_Ax1.hxx>
 #include <BRepTools.hxx>
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Writer.hxx>
@@ -250,17 +256,68 @@ TEST(ShapeMeshing, PolesAndSeams) {
   r = check_primitive(BRepPrimAPI_MakeCone(10.0, 0.0, 20.0).Shape(), "cone");
   EXPECT_EQ(r.refused, 0);
   EXPECT_TRUE(r.closed);
-  // A whole sphere has no edge but its seam and two poles: refused, with a reason;
-  // with no other face, nothing is meshed, which is an error even with keep_going
-  // (never an empty mesh).
+  // A whole sphere (no edge but its seam and two poles): the cube sphere.
+  r = check_primitive(BRepPrimAPI_MakeSphere(10.0).Shape(), "sphere");
+  EXPECT_EQ(r.refused, 0);
+  EXPECT_TRUE(r.closed);
+  // A refused face with no other face: nothing is meshed, which is an error even
+  // with keep_going (never an empty mesh).
   ShapeMeshOptions options;
   options.keep_going = true;
+  const TopoDS_Shape cone = drilled_cone(0, 0, 0);
+  TopoDS_Shape side;
+  for (TopExp_Explorer it(cone, TopAbs_FACE); it.More() && side.IsNull(); it.Next()) {
+    if (BRepAdaptor_Surface(TopoDS::Face(it.Current())).GetType() == GeomAbs_Cone) side = it.Current();
+  }
+  ASSERT_FALSE(side.IsNull());
   try {
-    mesh_shape(BRepPrimAPI_MakeSphere(10.0).Shape(), options);
-    ADD_FAILURE() << "a whole sphere gave a mesh";
+    mesh_shape(side, options);
+    ADD_FAILURE() << "a drilled cone's side gave a mesh";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("no face could be meshed"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("seam and pole"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("has a hole and a pole"), std::string::npos) << e.what();
+  }
+}
+
+// Surfaces closed around two poles at sizes from coarse to fine: a sphere, a prolate
+// and an oblate ellipsoid of revolution (a half ellipse revolved), each one face of a
+// seam and two poles. Every quad's corners stay well above 0 against the surface
+// normal and against the quad's own normal, and the mesh is closed.
+TEST(ShapeMeshing, SurfacesClosedAroundTwoPolesGetTheCubeSphere) {
+  const auto revolved_ellipse = [](double along_axis, double across) {
+    const gp_Ax2 frame(gp_Pnt(0, 0, 0), gp_Dir(0, 1, 0), gp_Dir(0, 0, 1));
+    const Handle(Geom_TrimmedCurve) half =
+        along_axis >= across ? new Geom_TrimmedCurve(new Geom_Ellipse(gp_Elips(frame, along_axis, across)), 0, M_PI)
+                             : new Geom_TrimmedCurve(new Geom_Ellipse(gp_Elips(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 1, 0),
+                                                                                        gp_Dir(1, 0, 0)),
+                                                                                  across, along_axis)),
+                                                     -M_PI / 2, M_PI / 2);
+    return BRepPrimAPI_MakeRevol(BRepBuilderAPI_MakeEdge(half).Edge(), gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)))
+        .Shape();
+  };
+  const std::vector<std::pair<std::string, TopoDS_Shape>> shapes{
+      {"sphere", BRepPrimAPI_MakeSphere(10.0).Shape()},
+      {"prolate", revolved_ellipse(15.0, 6.0)},
+      {"oblate", revolved_ellipse(5.0, 12.0)}};
+  for (const auto& [name, shape] : shapes) {
+    const ShapeIndex index(shape);
+    ASSERT_EQ(index.face_count(), 1) << name;
+    for (const double divisor : {4.0, 10.0, 25.0, 60.0}) {
+      ShapeMeshOptions options;
+      options.size = diagonal(shape) / divisor;
+      const ShapeMesh mesh = mesh_shape(shape, options).mesh;
+      ASSERT_EQ(mesh.faces.size(), 1u) << name;
+      EXPECT_EQ(mesh.faces[0].template_tree, "C6[T0,T0,T0,T0,T0,T0]") << name;
+      std::map<std::pair<NodeId, NodeId>, int> uses;
+      for (std::size_t k = 0; k < mesh.quads.size(); ++k) {
+        const Quad& q = mesh.quads[k];
+        const std::array<Vec3, 4> p{mesh.nodes[q[0]], mesh.nodes[q[1]], mesh.nodes[q[2]], mesh.nodes[q[3]]};
+        EXPECT_GT(own_scaled_jacobian(p), 0.2) << name << " D/" << divisor << " quad " << k;
+        EXPECT_GT(mesh.scaled_jacobian[k], 0.2) << name << " D/" << divisor << " quad " << k;
+        for (int i = 0; i < 4; ++i) ++uses[std::minmax(q[i], q[(i + 1) % 4])];
+      }
+      for (const auto& [edge, count] : uses) EXPECT_EQ(count, 2) << name << " D/" << divisor << ": open mesh edge";
+    }
   }
 }
 
