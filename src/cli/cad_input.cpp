@@ -69,6 +69,7 @@ CadInputMesh mesh_cad_input(const MeshCommand& command, std::ostream& err) {
   }
   for (int f : read.invalid_faces) options.damaged_faces[f] = kInvalidFaceReason;
   CadInputMesh out;
+  out.read_warnings = read.warnings;
   try {
     out.result = mesh_shape(shape, options);
   } catch (const FacesRefusedError& e) {

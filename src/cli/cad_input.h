@@ -12,6 +12,7 @@
 
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "cli/mesh_command.h"
 #include "core/quality.h"
@@ -23,6 +24,7 @@ namespace tquad {
 struct CadInputMesh {
   ShapeMeshResult result;  // the mesh and the pipeline's report
   QualitySummary quality;
+  std::vector<std::string> read_warnings;  // ReadShape::warnings
 };
 
 // Reads command.input in a child process (occ/isolated_reader.h), meshes the faces

@@ -201,6 +201,7 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
 
   QualitySummary quality;
   ShapeMeshResult shape_result;
+  std::vector<std::string> read_warnings;
   ShapeMesh shape;
   if (kind == InputKind::boundary) {
     shape = mesh_boundary_input(command, format, quality, shape_result.stage_seconds);
@@ -213,6 +214,7 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
     shape_result = std::move(cad.result);
     shape = std::move(shape_result.mesh);
     quality = cad.quality;
+    read_warnings = std::move(cad.read_warnings);
   }
   const auto writing = std::chrono::steady_clock::now();
   switch (format) {
@@ -240,6 +242,7 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
     err << "tquad: warning: " << quality.collapsed << " of " << shape.quads.size()
         << " quads are collapsed (an edge under 1/1000 of the quad's longest: a triangle in effect)\n";
   }
+  for (const std::string& w : read_warnings) err << "tquad: warning: " << one_line(w) << "\n";
   if (!shape_result.bad_quad_faces.empty()) {
     long long bad = 0;
     std::string faces;
@@ -273,6 +276,7 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
       nlohmann::ordered_json bad_faces = nlohmann::ordered_json::array();
       for (const auto& [face, count] : shape_result.bad_quad_faces) bad_faces.push_back({{"face", face}, {"quads", count}});
       report["bad_quad_faces"] = bad_faces;
+      report["read_warnings"] = read_warnings;
       // Inside "mesh faces", summed over the faces (all threads): every candidate
       // route of each face before smoothing, then smoothing the chosen mesh.
       report["face_seconds"] = {{"meshing", shape_result.meshing_seconds},

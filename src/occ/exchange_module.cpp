@@ -4,6 +4,7 @@
 
 #include <exception>
 #include <type_traits>
+#include <vector>
 
 #include "core/input_error.h"
 #include "occ/exchange_reader.h"
@@ -12,11 +13,14 @@ extern "C" __attribute__((visibility("default"))) int tquad_read_exchange_file(c
                                                                               TopoDS_Shape* shape,
                                                                               std::string* error) {
   try {
+    std::vector<std::string> warnings;
 #ifdef TQUAD_EXCHANGE_STEP
-    *shape = tquad::read_step_file(path);
+    *shape = tquad::read_step_file(path, &warnings);
 #else
-    *shape = tquad::read_iges_file(path);
+    *shape = tquad::read_iges_file(path, &warnings);
 #endif
+    error->clear();
+    for (const std::string& w : warnings) *error += w + "\n";
     return 0;
   } catch (const tquad::InputError& e) {
     *error = e.what();

@@ -12,6 +12,7 @@ inline constexpr const char* kStepModuleFile = "tquad_step.so";
 inline constexpr const char* kIgesModuleFile = "tquad_iges.so";
 inline constexpr const char* kExchangeEntryPoint = "tquad_read_exchange_file";
 
-// Returns 0 with *shape set; 2 with *error the InputError's message; 1 with *error the
-// message of any other failure.
+// Returns 0 with *shape set and *error the reader's warnings, one per line (empty when
+// none); 2 with *error the InputError's message; 1 with *error the message of any
+// other failure.
 using ReadExchangeEntry = int (*)(const char* path, TopoDS_Shape* shape, std::string* error);

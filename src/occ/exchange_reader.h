@@ -19,6 +19,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace tquad {
 
@@ -31,8 +32,10 @@ class ExchangeReadersUnavailable : public std::runtime_error {
 
 // The file's shape (all its roots as one). Throws InputError naming the file when the
 // reader cannot read it or it holds no shape the reader can transfer; the loading
-// definitions throw ExchangeReadersUnavailable when the module is missing.
-TopoDS_Shape read_step_file(const std::string& path);
-TopoDS_Shape read_iges_file(const std::string& path);
+// definitions throw ExchangeReadersUnavailable when the module is missing. Problems
+// that take nothing out of the shape (an entity's name written as $) are appended to
+// `warnings`, one line each, when it is given.
+TopoDS_Shape read_step_file(const std::string& path, std::vector<std::string>* warnings = nullptr);
+TopoDS_Shape read_iges_file(const std::string& path, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace tquad

@@ -37,11 +37,18 @@ ReadExchangeEntry load_entry(const char* file, const char* format) {
   return entry;
 }
 
-TopoDS_Shape read_through(const char* file, const char* format, const std::string& path) {
+TopoDS_Shape read_through(const char* file, const char* format, const std::string& path,
+                          std::vector<std::string>* warnings) {
   TopoDS_Shape shape;
   std::string error;
   switch (load_entry(file, format)(path.c_str(), &shape, &error)) {
-    case 0: return shape;
+    case 0: {
+      std::size_t start = 0;
+      for (std::size_t end; warnings && (end = error.find('\n', start)) != std::string::npos; start = end + 1) {
+        warnings->push_back(error.substr(start, end - start));
+      }
+      return shape;
+    }
     case 2: throw InputError(error);
     default: throw std::runtime_error(error);
   }
@@ -49,7 +56,11 @@ TopoDS_Shape read_through(const char* file, const char* format, const std::strin
 
 }  // namespace
 
-TopoDS_Shape read_step_file(const std::string& path) { return read_through(kStepModuleFile, "STEP", path); }
-TopoDS_Shape read_iges_file(const std::string& path) { return read_through(kIgesModuleFile, "IGES", path); }
+TopoDS_Shape read_step_file(const std::string& path, std::vector<std::string>* warnings) {
+  return read_through(kStepModuleFile, "STEP", path, warnings);
+}
+TopoDS_Shape read_iges_file(const std::string& path, std::vector<std::string>* warnings) {
+  return read_through(kIgesModuleFile, "IGES", path, warnings);
+}
 
 }  // namespace tquad

@@ -141,7 +141,7 @@ void refuse_partial_reading(IGESControl_Reader& reader, const std::string& path)
 
 }  // namespace
 
-TopoDS_Shape read_iges_file(const std::string& path) {
+TopoDS_Shape read_iges_file(const std::string& path, std::vector<std::string>* /*warnings: none so far*/) {
   IGESControl_Reader reader;
   const TopoDS_Shape shape = read_with(reader, path, "IGES", &refuse_partial_reading);
   refuse_lost_faces(reader, path);

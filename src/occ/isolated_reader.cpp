@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -46,7 +47,8 @@ constexpr bool kLimitAddressSpace = true;
 
 // The child: reads, and writes 'S' + binary BREP, or 'E' + message (the input's fault),
 // 'F' + message (the program's), 'M' (memory) or 'C' (a crash caught) to fd; never returns.
-[[noreturn]] void run_reader(int fd, const std::function<TopoDS_Shape()>& read, const ReadLimits& limits) {
+[[noreturn]] void run_reader(int fd, const std::function<TopoDS_Shape(std::vector<std::string>&)>& read,
+                             const ReadLimits& limits) {
   // A crash here is only this child's death, reported by the parent: the handlers
   // the caller installed (FreeCAD's turn SIGSEGV into a C++ exception; a fuzzer's
   // write a crash report) must not run on the reader's state.
@@ -72,7 +74,8 @@ constexpr bool kLimitAddressSpace = true;
   }
   std::string message;
   try {
-    const TopoDS_Shape shape = read();
+    std::vector<std::string> warnings;
+    const TopoDS_Shape shape = read(warnings);
     TopTools_IndexedMapOfShape faces;
     TopExp::MapShapes(shape, TopAbs_FACE, faces);
     std::string invalid;
@@ -84,7 +87,14 @@ constexpr bool kLimitAddressSpace = true;
     }
     std::ostringstream out;
     BinTools::Write(shape, out);
-    message = "S" + std::to_string(faces.Extent()) + " " + std::to_string(count) + invalid + "\n" + out.str();
+    // The warnings, a line each, between the header and the shape.
+    std::string warning_lines;
+    for (std::string w : warnings) {
+      std::replace(w.begin(), w.end(), '\n', ' ');
+      warning_lines += w + "\n";
+    }
+    message = "S" + std::to_string(faces.Extent()) + " " + std::to_string(count) + invalid + " " +
+              std::to_string(warnings.size()) + "\n" + warning_lines + out.str();
   } catch (const InputError& e) {
     message = std::string("E") + e.what();
   } catch (const std::bad_alloc&) {
@@ -99,7 +109,8 @@ constexpr bool kLimitAddressSpace = true;
 
 // Runs `read` in a child; `what` names the input in messages. Returns the child's
 // reply when it read a shape ('S' ...); throws what read_shape_isolated throws otherwise.
-std::string shape_reply_from_child(const std::function<TopoDS_Shape()>& read, const std::string& what,
+std::string shape_reply_from_child(const std::function<TopoDS_Shape(std::vector<std::string>&)>& read,
+                                   const std::string& what,
                                    const ReadLimits& limits) {
   int fds[2];
   if (pipe(fds) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
@@ -181,17 +192,25 @@ unsigned long long check_file_to_read(const std::string& path, const ReadLimits&
 }  // namespace
 
 ReadShape decode_shape_reply(const std::string& payload) {
-  // "S<faces> <invalid count> <indices...>\n<binary BREP>"
-  const std::size_t header_end = payload.find('\n');
-  if (payload.empty() || payload[0] != 'S' || header_end == std::string::npos) {
+  // "S<faces> <invalid count> <indices...> <warning count>\n<warning lines>\n<binary BREP>"
+  std::size_t line_end = payload.find('\n');
+  if (payload.empty() || payload[0] != 'S' || line_end == std::string::npos) {
     throw std::logic_error("the reader process's reply has no header");
   }
-  std::istringstream header(payload.substr(1, header_end - 1));
+  std::istringstream header(payload.substr(1, line_end - 1));
   int face_count = 0, invalid = 0;
   header >> face_count >> invalid;
   ReadShape result;
   for (int i = 0, f = 0; i < invalid && header >> f; ++i) result.invalid_faces.push_back(f);
-  std::istringstream in(payload.substr(header_end + 1));
+  std::size_t warnings = 0;
+  if (!(header >> warnings)) throw std::logic_error("the reader process's reply has no warning count");
+  for (std::size_t i = 0; i < warnings; ++i) {
+    const std::size_t start = line_end + 1;
+    line_end = payload.find('\n', start);
+    if (line_end == std::string::npos) throw std::logic_error("the reader process's reply lacks a warning");
+    result.warnings.push_back(payload.substr(start, line_end - start));
+  }
+  std::istringstream in(payload.substr(line_end + 1));
   BinTools::Read(result.shape, in);
   if (result.shape.IsNull()) throw std::logic_error("the reader process's shape did not come back");
   TopTools_IndexedMapOfShape faces;
@@ -205,13 +224,15 @@ std::string read_shape_reply(const std::string& path, const ReadLimits& limits) 
   if (!is_shape_path(path)) read_shape(path);  // throws, naming the unknown format
   ReadLimits used = limits;
   if (used.seconds <= 0) used.seconds = default_read_seconds(bytes);
-  return shape_reply_from_child([&] { return read_shape(path); }, "'" + path + "'", used);
+  return shape_reply_from_child([&](std::vector<std::string>& warnings) { return read_shape(path, &warnings); },
+                                "'" + path + "'", used);
 }
 
 std::string read_brep_text_reply(const std::string& brep, const ReadLimits& limits) {
   ReadLimits used = limits;
   if (used.seconds <= 0) used.seconds = default_read_seconds(brep.size());
-  return shape_reply_from_child([&] { return read_brep_text(brep); }, "the BREP text", used);
+  return shape_reply_from_child([&](std::vector<std::string>&) { return read_brep_text(brep); }, "the BREP text",
+                                used);
 }
 
 ReadShape read_shape_isolated(const std::string& path, const ReadLimits& limits) {

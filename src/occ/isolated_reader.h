@@ -54,6 +54,9 @@ struct ReadShape {
   // (BRepCheck_Analyzer, run in the child too) finds invalid: a missing wire or
   // pcurve, a wire that does not close, an edge off its surface.
   std::vector<int> invalid_faces;
+  // What the reader read past without losing any of the shape (exchange_reader.h),
+  // for the front end to show: one line each, naming the file and the entity.
+  std::vector<std::string> warnings;
 };
 
 // As read_shape (shape_reader.h), in a child process. Also refuses what is not a

@@ -149,13 +149,13 @@ TopoDS_Shape read_checked_brep(std::istream& in, const std::string& what) {
 
 }  // namespace
 
-TopoDS_Shape read_shape(const std::string& path) {
+TopoDS_Shape read_shape(const std::string& path, std::vector<std::string>* warnings) {
   if (!std::ifstream(path).good()) throw InputError("cannot open '" + path + "'");
   const ShapeFormat format = shape_format_of(path);
   TopoDS_Shape shape;
   if (format == ShapeFormat::step || format == ShapeFormat::iges) {
     require_complete(path, format);
-    shape = format == ShapeFormat::step ? read_step_file(path) : read_iges_file(path);
+    shape = format == ShapeFormat::step ? read_step_file(path, warnings) : read_iges_file(path, warnings);
   } else if (format == ShapeFormat::brep) {
     std::ifstream check(path);
     const std::string problem = brep_problem(check);

@@ -5,14 +5,16 @@
 #include <TopoDS_Shape.hxx>
 
 #include <string>
+#include <vector>
 
 #include "occ/shape_formats.h"  // is_shape_path
 
 namespace tquad {
 
 // The file's format follows its extension: .step/.stp, .iges/.igs, .brep/.brp.
-// Throws InputError naming the file when it cannot be read or holds no face.
-TopoDS_Shape read_shape(const std::string& path);
+// Throws InputError naming the file when it cannot be read or holds no face; what
+// the reader read past without loss goes to `warnings` (exchange_reader.h).
+TopoDS_Shape read_shape(const std::string& path, std::vector<std::string>* warnings = nullptr);
 
 // Throws InputError when the text is not a BREP shape with at least one face.
 TopoDS_Shape read_brep_text(const std::string& brep);

@@ -32,6 +32,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <vector>
 
 #include "core/input_error.h"
 #include "occ/exchange_read_with.h"
@@ -110,13 +111,29 @@ bool carries_shape(const Handle(Standard_Transient)& entity) {
                      [&](const Handle(Standard_Type)& kind) { return entity->IsKind(kind); });
 }
 
+// A failure that takes nothing out of the shape: a text parameter that only labels an
+// entity (its name, description or id) written as $ where the standard wants a
+// string, as some exporters do; or a seam curve naming one pcurve twice, for which
+// OpenCASCADE's transfer makes the seam's second pcurve itself. Either is a warning.
+// Whether the shape then came through whole is still checked: shells against the
+// faces they list (refuse_lost_faces), faces by OpenCASCADE's checker (invalid ones
+// are refused as damaged).
+bool harmless_failure(const std::string& failure) {
+  for (const char* label : {"(name) not a quoted String", "(description) not a quoted String",
+                            "(id) not a quoted String"}) {
+    if (failure.rfind("Parameter n", 0) == 0 && failure.find(label) != std::string::npos) return true;
+  }
+  return failure.rfind("Seam Curve with twice the same geom", 0) == 0;
+}
+
 // An entity of the shape that did not read whole (one of its references names an
 // entity of the wrong type or none, a value does not parse): OpenCASCADE transfers
 // the file without what the entity holds. A damaged CLOSED_SHELL line of one of the
 // five bodies of as1-tu-203.stp left the shell unread, its MANIFOLD_SOLID_BREP
 // without its outer shell, and the part was meshed as four bodies with exit 0; the
 // shells that did come through (refuse_lost_faces) had lost nothing.
-void refuse_unread_shape_entities(STEPControl_Reader& reader, const std::string& path) {
+void refuse_unread_shape_entities(STEPControl_Reader& reader, const std::string& path,
+                                  std::vector<std::string>* warnings) {
   const Handle(Interface_InterfaceModel) model = reader.Model();
   if (model.IsNull()) return;
   for (int i = 1; i <= model->NbEntities(); ++i) {
@@ -126,6 +143,16 @@ void refuse_unread_shape_entities(STEPControl_Reader& reader, const std::string&
     if (entity.IsNull() || !carries_shape(entity)) continue;
     // A complex entity's type name comes in parentheses already: (A,B,C).
     const std::string type = model->TypeName(entity);
+    bool harmless = true;
+    for (int k = 1; k <= check->NbFails() && harmless; ++k) harmless = harmless_failure(check->CFail(k));
+    if (harmless) {
+      if (warnings) {
+        warnings->push_back("'" + path + "': entity " + entity_label(model, entity) + " " +
+                            (type.rfind('(', 0) == 0 ? type : "(" + type + ")") + ": " + check->CFail(1) +
+                            "; read on, nothing of the shape depends on it");
+      }
+      continue;
+    }
     throw InputError("'" + path + "' is damaged: entity " + entity_label(model, entity) + " " +
                      (type.rfind('(', 0) == 0 ? type : "(" + type + ")") + " did not read (" + check->CFail(1) +
                      "): OpenCASCADE would transfer the shape without it or with a default in its place");
@@ -160,20 +187,25 @@ void refuse_parse_failures(STEPControl_Reader& reader, const std::string& path) 
   }
 }
 
-// Everything that shows a file read in part; for a file that transfers nothing too.
-void refuse_partial_reading(STEPControl_Reader& reader, const std::string& path) {
+// Everything that shows a file read in part; harmless failures go to `warnings`.
+void refuse_partial_reading(STEPControl_Reader& reader, const std::string& path, std::vector<std::string>* warnings) {
   refuse_parse_failures(reader, path);
-  refuse_unread_shape_entities(reader, path);
+  refuse_unread_shape_entities(reader, path, warnings);
+}
+
+// For a file that transfers nothing: what did not read, named.
+void explain_empty_transfer(STEPControl_Reader& reader, const std::string& path) {
+  refuse_partial_reading(reader, path, nullptr);
 }
 
 }  // namespace
 
-TopoDS_Shape read_step_file(const std::string& path) {
+TopoDS_Shape read_step_file(const std::string& path, std::vector<std::string>* warnings) {
   STEPControl_Reader reader;
   // A file whose one body did not read transfers nothing: name the entity then too.
-  const TopoDS_Shape shape = read_with(reader, path, "STEP", &refuse_partial_reading);
+  const TopoDS_Shape shape = read_with(reader, path, "STEP", &explain_empty_transfer);
   refuse_lost_faces(reader, path);
-  refuse_partial_reading(reader, path);
+  refuse_partial_reading(reader, path, warnings);
   return shape;
 }
 

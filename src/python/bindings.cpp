@@ -210,11 +210,13 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
   limits.seconds = read_timeout;
   ShapeMeshResult result;
   QualitySummary quality;
+  std::vector<std::string> read_warnings;
   {
     py::gil_scoped_release release;
     // Read in a child process: a damaged file must not take FreeCAD down.
     const ReadShape read = looks_like_brep_text(brep_text_or_path) ? read_brep_text_isolated(brep_text_or_path, limits)
                                                                    : read_shape_isolated(brep_text_or_path, limits);
+    read_warnings = read.warnings;
     const TopoDS_Shape& shape = read.shape;
     for (int f : read.invalid_faces) options.damaged_faces[f] = kInvalidFaceReason;
     try {
@@ -259,6 +261,7 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
     bad_faces.append(d);
   }
   out["bad_quad_faces"] = bad_faces;
+  out["read_warnings"] = read_warnings;
   return out;
 }
 

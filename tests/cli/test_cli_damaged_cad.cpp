@@ -5,6 +5,7 @@
 // each test (found by random one-byte edits: each crashed or hung the reader in the
 // same process before).
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRep_Builder.hxx>
 #include <STEPControl_Writer.hxx>
 #include <TopoDS_Compound.hxx>
@@ -18,12 +19,15 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
 
 #include "cli_test_support.h"
 
@@ -234,6 +238,47 @@ TEST_F(DamagedCad, AKilledCommandLeavesNoReaderRunning) {
   }
   EXPECT_FALSE(running(readers.front())) << "reader " << readers.front() << " outlived its killed command";
   EXPECT_FALSE(fs::exists(out));
+}
+
+// Problems that take nothing out of the shape are warnings, and the mesh is the one
+// of the unedited file: a representation's name written $ (exporters do; the
+// standard wants ''), and a seam curve naming one pcurve twice (OpenCASCADE's transfer
+// makes the second). Refusal stays for what loses geometry (the tests above).
+TEST_F(DamagedCad, ANameWrittenAsDollarIsAWarningAndTheShapeIsReadWhole) {
+  const std::string file = path("dollar.step");
+  write_text(file, edited_example("plate_with_hole.step", "MANIFOLD_SURFACE_SHAPE_REPRESENTATION('',",
+                                  "MANIFOLD_SURFACE_SHAPE_REPRESENTATION($,"));
+  const RunResult edited = run_tquad({"mesh", file, "-o", path("out.json"), "--report", "json"});
+  ASSERT_EQ(edited.exit_status, 0) << edited.err;
+  EXPECT_NE(edited.err.find("warning: '" + file + "': entity #10 (MANIFOLD_SURFACE_SHAPE_REPRESENTATION)"),
+            std::string::npos)
+      << edited.err;
+  const RunResult plain = run_tquad({"mesh", kShapes + "/plate_with_hole.step", "-o", path("plain.json")});
+  ASSERT_EQ(plain.exit_status, 0) << plain.err;
+  EXPECT_EQ(read_text(path("out.json")), read_text(path("plain.json")));
+}
+
+TEST_F(DamagedCad, ASeamCurveNamingOnePcurveTwiceIsAWarningAndTheShapeIsReadWhole) {
+  const std::string plain_file = path("cylinder.step"), file = path("seam.step");
+  STEPControl_Writer writer;
+  writer.Transfer(BRepPrimAPI_MakeCylinder(5.0, 10.0).Shape(), STEPControl_AsIs);
+  ASSERT_EQ(writer.Write(plain_file.c_str()), IFSelect_RetDone);
+  const std::string text = read_text(plain_file);
+  const std::regex seam(R"(SEAM_CURVE\('',(#\d+),\((#\d+),#\d+\))");
+  ASSERT_TRUE(std::regex_search(text, seam)) << "no seam curve written";
+  write_text(file, std::regex_replace(text, seam, "SEAM_CURVE('',$1,($2,$2)"));
+  const RunResult edited = run_tquad({"mesh", file, "-o", path("out.json"), "--report", "json"});
+  ASSERT_EQ(edited.exit_status, 0) << edited.err;
+  EXPECT_NE(edited.err.find("Seam Curve with twice the same geom; read on"), std::string::npos) << edited.err;
+  // The healed pcurve places interior nodes within rounding of the plain file's: the
+  // same faces, templates and counts.
+  const RunResult plain = run_tquad({"mesh", plain_file, "-o", path("plain.json"), "--report", "json"});
+  ASSERT_EQ(plain.exit_status, 0) << plain.err;
+  const nlohmann::json a = nlohmann::json::parse(edited.out), b = nlohmann::json::parse(plain.out);
+  EXPECT_EQ(a["quads"], b["quads"]);
+  EXPECT_EQ(a["nodes"], b["nodes"]);
+  EXPECT_EQ(a["faces"].dump(), b["faces"].dump());
+  EXPECT_TRUE(a["refused_faces"].empty());
 }
 
 TEST_F(DamagedCad, TheGoodExampleStillReadsThroughTheChild) {

@@ -92,6 +92,8 @@ class Mesh:
             is not connected along them (``sew=True`` joins them).
         sewn_edges: for a shape meshed with ``sew=True``, the edges merged into
             their neighbours; else 0.
+        read_warnings: for a shape file, what the reader read past without losing
+            any of the shape (an entity's name written as ``$``), a line each.
         bad_quad_faces: for a shape meshed with ``allow_inverted=True``, the faces
             kept with inverted, degenerate or folded quads (a corner's scaled
             Jacobian at or below 1e-6 against the surface normal or the quad's
@@ -109,6 +111,7 @@ class Mesh:
         self.unsewn_edge_pairs: List[Tuple[int, int]] = data.get("unsewn_edge_pairs", [])
         self.sewn_edges: int = data.get("sewn_edges", 0)
         self.bad_quad_faces: List[dict] = data.get("bad_quad_faces", [])
+        self.read_warnings: List[str] = data.get("read_warnings", [])
         self.scaled_jacobian: np.ndarray = data["scaled_jacobian"]
         self.lee_lo: np.ndarray = data["lee_lo"]
         self.mid_nodes: Optional[np.ndarray] = data.get("mid_nodes")
