@@ -58,21 +58,33 @@ GMSH_ROUTES = ("blossom", "allquad")
 
 # ---------------------------------------------------------------- quality
 
+def corner_scaled_jacobians(points, quads, normals=None):
+    """Scaled Jacobian at every corner (see the module docstring): an (m, 4) array for
+    points (n, 3) and quads (m, 4). `normals` is None for each quad's own normal
+    (p2 - p0) x (p3 - p1), or an (m, 4, 3) array giving the normal at each corner. A corner
+    with a zero-length edge or normal scores 0."""
+    if len(quads) == 0:
+        return np.zeros((0, 4))
+    p = np.asarray(points, dtype=float)[np.asarray(quads)]          # (m, 4, 3)
+    if normals is None:
+        normal = np.cross(p[:, 2] - p[:, 0], p[:, 3] - p[:, 1])[:, None, :]   # (m, 1, 3)
+    else:
+        normal = np.asarray(normals, dtype=float)                    # (m, 4, 3)
+    normal_len = np.linalg.norm(normal, axis=2)                      # (m, 1) or (m, 4)
+    e1 = np.roll(p, -1, axis=1) - p                                  # p[i+1] - p[i]
+    e2 = np.roll(p, 1, axis=1) - p                                   # p[i-1] - p[i]
+    signed = np.einsum("mij,mij->mi", np.cross(e1, e2), np.broadcast_to(normal, p.shape))
+    denom = np.linalg.norm(e1, axis=2) * np.linalg.norm(e2, axis=2) * normal_len
+    corner = np.zeros_like(signed)
+    np.divide(signed, denom, out=corner, where=denom > 0)             # degenerate -> 0
+    return corner
+
+
 def scaled_jacobian(points, quads):
     """Scaled Jacobian of each quad (see the module docstring); points (n, 3), quads (m, 4)."""
     if len(quads) == 0:
         return np.zeros(0)
-    p = np.asarray(points, dtype=float)[np.asarray(quads)]          # (m, 4, 3)
-    normal = np.cross(p[:, 2] - p[:, 0], p[:, 3] - p[:, 1])          # (m, 3)
-    normal_len = np.linalg.norm(normal, axis=1)
-    e1 = np.roll(p, -1, axis=1) - p                                  # p[i+1] - p[i]
-    e2 = np.roll(p, 1, axis=1) - p                                   # p[i-1] - p[i]
-    signed = np.einsum("mij,mj->mi", np.cross(e1, e2), normal)       # (m, 4)
-    denom = (np.linalg.norm(e1, axis=2) * np.linalg.norm(e2, axis=2)
-             * normal_len[:, None])
-    corner = np.zeros_like(signed)
-    np.divide(signed, denom, out=corner, where=denom > 0)             # degenerate -> 0
-    return corner.min(axis=1)
+    return corner_scaled_jacobians(points, quads).min(axis=1)
 
 
 def triangle_corner_sines(points, triangles):

@@ -1,6 +1,9 @@
 #include "occ/face_mesher.h"
 
 #include <BRepAdaptor_Surface.hxx>
+#include <IntCurvesFace_ShapeIntersector.hxx>
+#include <Precision.hxx>
+#include <gp_Lin.hxx>
 #include <Extrema_ExtPS.hxx>
 #include <ShapeAnalysis_Surface.hxx>
 #include <BRep_Tool.hxx>
@@ -12,6 +15,8 @@
 
 #include "core/breadth_first_placement.h"
 #include "core/disk_o_grid.h"
+#include "core/mean_plane.h"
+#include "core/planar_domain.h"
 #include "core/pole_sector_mesh.h"
 #include "core/face_refusal.h"
 #include "core/input_error.h"
@@ -96,9 +101,9 @@ FaceMeshResult mesh_in_parameter_space(const TopoDS_Face& face, const FaceBounda
   return place_parameter_mesh(face, b, nodes, mesh_boundary(BoundaryLoop{b.uv, corners}, options), start);
 }
 
-FaceMeshResult mesh_in_space(const TopoDS_Face& face, const FaceBoundary& b, const std::vector<int>& corners,
-                             const std::vector<Vec3>& nodes, const MeshOptions& options) {
-  // A loop through a seam meets the seam's nodes twice: in space it folds onto itself.
+// The face's outer loop in space, each node once. A loop through a seam meets the
+// seam's nodes twice: in space it folds onto itself, which is refused.
+std::vector<Vec3> loop_in_space(const FaceBoundary& b, const std::vector<Vec3>& nodes) {
   std::vector<NodeId> sorted = b.nodes;
   std::sort(sorted.begin(), sorted.end());
   const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
@@ -108,23 +113,36 @@ FaceMeshResult mesh_in_space(const TopoDS_Face& face, const FaceBoundary& b, con
   }
   std::vector<Vec3> loop;
   for (NodeId id : b.nodes) loop.push_back(nodes[id]);
-  const auto start = std::chrono::steady_clock::now();
-  const QuadMesh mesh = mesh_boundary(BoundaryLoop{loop, corners}, options);
+  return loop;
+}
+
+// Whether a mesh of the loop in space, its quads counter-clockwise about the loop's
+// Newell normal, turns the other way around the face's outer normal: the outer
+// normals along the loop, summed (zero where singular), against that normal. The
+// first node's alone was wrong where it is a pole: a fillet's B-spline closing on a
+// point has du x dv zero there, and its mesh came out inverted (42 of 46 quads on a
+// generated part).
+bool reversed_against_rim(const TopoDS_Face& face, const FaceBoundary& b, const std::vector<Vec3>& loop) {
+  const BRepAdaptor_Surface surface(face);
+  const bool reversed = face.Orientation() == TopAbs_REVERSED;
+  Vec3 outer;
+  for (const Vec3& uv : b.uv) outer += outer_normal(surface, reversed, uv);
+  return dot(newell_normal(loop), outer) < 0;
+}
+
+// A mesh of the face's outer loop in space (its loop nodes first, in loop order) put
+// on the surface, its quads reversed when `reverse`: each interior node at its
+// closest point there; `start`: when building the mesh began.
+FaceMeshResult place_space_mesh(const TopoDS_Face& face, const FaceBoundary& b, const std::vector<Vec3>& loop,
+                                const std::vector<Vec3>& nodes, const QuadMesh& mesh, bool reverse,
+                                std::chrono::steady_clock::time_point start) {
   FaceMeshResult out;
   out.boundary_nodes = b.nodes;
   out.used_projection = true;
   out.template_seconds = seconds_since(start);
   const auto placing = std::chrono::steady_clock::now();
-  // The 3D loop's own orientation: compare with the outer normals along the loop,
-  // summed (zero where singular). The first node's alone was wrong where it is a
-  // pole: a fillet's B-spline closing on a point has du x dv zero there, and its
-  // mesh came out inverted (42 of 46 quads on a generated part).
-  const Vec3 loop_normal = newell_normal(loop);
   const BRepAdaptor_Surface surface(face);
-  const bool reversed = face.Orientation() == TopAbs_REVERSED;
-  Vec3 outer;
-  for (const Vec3& uv : b.uv) outer += outer_normal(surface, reversed, uv);
-  take_quads(mesh, dot(loop_normal, outer) < 0, out);
+  take_quads(mesh, reverse, out);
 
   // Closest points on the surface, each search started from the (u, v) of an edge
   // neighbour already placed, breadth first from the boundary: OpenCASCADE's Newton
@@ -161,7 +179,60 @@ FaceMeshResult mesh_in_space(const TopoDS_Face& face, const FaceBoundary& b, con
   return out;
 }
 
+FaceMeshResult mesh_in_space(const TopoDS_Face& face, const FaceBoundary& b, const std::vector<int>& corners,
+                             const std::vector<Vec3>& nodes, const MeshOptions& options) {
+  const std::vector<Vec3> loop = loop_in_space(b, nodes);
+  const auto start = std::chrono::steady_clock::now();
+  return place_space_mesh(face, b, loop, nodes, mesh_boundary(BoundaryLoop{loop, corners}, options),
+                          reversed_against_rim(face, b, loop), start);
+}
+
 }  // namespace
+
+std::optional<FaceMeshResult> mesh_disk_in_space(const TopoDS_Face& face, const FaceBoundary& b,
+                                                 const std::vector<Vec3>& nodes, const MeshOptions& options) {
+  if (b.inner_wires > 0 || b.polar) return std::nullopt;
+  const std::vector<Vec3> loop = loop_in_space(b, nodes);
+  const std::optional<MeanPlane> plane = MeanPlane::of_loop(loop);
+  if (!plane) return std::nullopt;
+  const auto start = std::chrono::steady_clock::now();
+  // The loop seen on its mean plane, counter-clockwise there (MeanPlane), its CAD
+  // vertices marked so that a sharp one is no disk.
+  PlanarDomain domain;
+  DomainLoop& outer = domain.loops.emplace_back();
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Vec3 local = plane->local(loop[i]);
+    outer.points.push_back({local.x, local.y, 0.0});
+  }
+  outer.vertex.assign(loop.size(), 0);
+  for (int start_index : b.edge_start) outer.vertex[start_index] = 1;
+  std::optional<QuadMesh> disk = mesh_disk_o_grid(domain, options);
+  if (!disk) return std::nullopt;
+  // Each interior node where the line through its point of the plane, along the
+  // plane's normal, meets the face: a dome's closest points to its base plane would
+  // all lie on its rim. The face must lie over its plane (one hit each).
+  // The quads run counter-clockwise about the plane's normal; the face's outer normal
+  // where they land says which way they must turn (along the rim it may lie in the
+  // plane: a hemisphere's).
+  IntCurvesFace_ShapeIntersector hits;
+  hits.Load(face, Precision::Confusion());
+  const BRepAdaptor_Surface surface(face);
+  const bool reversed = face.Orientation() == TopAbs_REVERSED;
+  double facing = 0;
+  for (std::size_t i = 0; i < disk->nodes.size(); ++i) {
+    if (i < loop.size()) {
+      disk->nodes[i] = loop[i];
+      continue;
+    }
+    const Vec3 p = plane->point_at(disk->nodes[i].x, disk->nodes[i].y, 0.0);
+    hits.Perform(gp_Lin(gp_Pnt(p.x, p.y, p.z), gp_Dir(plane->normal.x, plane->normal.y, plane->normal.z)),
+                 -RealLast(), RealLast());
+    if (!hits.IsDone() || hits.NbPnt() != 1) return std::nullopt;
+    disk->nodes[i] = to_vec3(hits.Pnt(1));
+    facing += dot(outer_normal(surface, reversed, {hits.UParameter(1), hits.VParameter(1), 0.0}), plane->normal);
+  }
+  return place_space_mesh(face, b, loop, nodes, *disk, facing < 0, start);
+}
 
 Vec3 outer_normal(const BRepAdaptor_Surface& surface, bool reversed, const Vec3& uv) {
   Vec3 point;

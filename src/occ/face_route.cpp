@@ -267,6 +267,16 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
         }
       }
     }
+    // A face with a pole on its rim and no seam (a sphere's lune): the disk's O-grid
+    // on the loop's mean plane, where corners on the smooth rim, or at the pole, make
+    // quads of 180 degrees.
+    if (boundary.has_degenerate_edge && !boundary.polar && !user_corners) {
+      try {
+        if (auto disk = mesh_disk_in_space(index.face(f), boundary, nodes, options.templates)) keep(std::move(*disk));
+      } catch (const std::exception& e) {  // the corner routes stand
+        if (!best) note_refusal(e);
+      }
+    }
     // A disk's O-grid (a square and four patches around it) beats corners on a smooth
     // curve; offered when the face has no user corners and no pole (a polar disk had
     // its own above).

@@ -22,6 +22,7 @@
 #include <StepShape_ContextDependentShapeRepresentation.hxx>
 #include <StepShape_Face.hxx>
 #include <StepShape_HArray1OfFace.hxx>
+#include <StepShape_ManifoldSolidBrep.hxx>
 #include <StepShape_ShapeDefinitionRepresentation.hxx>
 #include <StepShape_ShapeRepresentation.hxx>
 #include <StepShape_TopologicalRepresentationItem.hxx>
@@ -59,6 +60,15 @@ void refuse_lost_faces(STEPControl_Reader& reader, const std::string& path) {
   const Handle(Transfer_TransientProcess) process = reader.WS()->TransferReader()->TransientProcess();
   if (model.IsNull() || process.IsNull()) return;
   const auto label = [&](const Handle(Standard_Transient)& entity) { return entity_label(model, entity); };
+  // A solid of the file that did not come through whole: a damaged number in one of
+  // its curves (a circle's radius made negative) made OpenCASCADE drop the whole
+  // solid and transfer the others, meshed with exit 0.
+  for (int i = 1; i <= model->NbEntities(); ++i) {
+    const auto solid = Handle(StepShape_ManifoldSolidBrep)::DownCast(model->Value(i));
+    if (solid.IsNull() || process->IsBound(solid)) continue;
+    throw InputError("'" + path + "' is damaged: its solid " + label(solid) +
+                     " did not transfer; the shape would be meshed without it");
+  }
   for (int i = 1; i <= model->NbEntities(); ++i) {
     const auto shell = Handle(StepShape_ConnectedFaceSet)::DownCast(model->Value(i));
     if (shell.IsNull() || !process->IsBound(shell)) continue;

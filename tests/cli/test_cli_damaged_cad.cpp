@@ -9,6 +9,7 @@
 #include <BRep_Builder.hxx>
 #include <STEPControl_Writer.hxx>
 #include <TopoDS_Compound.hxx>
+#include <gp_Ax2.hxx>
 #include <gp_Pnt.hxx>
 
 #include <signal.h>
@@ -238,6 +239,27 @@ TEST_F(DamagedCad, AKilledCommandLeavesNoReaderRunning) {
   }
   EXPECT_FALSE(running(readers.front())) << "reader " << readers.front() << " outlived its killed command";
   EXPECT_FALSE(fs::exists(out));
+}
+
+// A circle's radius made negative in a STEP file of a box and a cylinder: OpenCASCADE
+// drops the cylinder's solid whole and transfers the box, which was meshed with
+// exit 0 (694 quads of 1,176). The file's solid that did not transfer is named.
+TEST_F(DamagedCad, ASolidLostInTransferIsRefusedNamingIt) {
+  BRep_Builder builder;
+  TopoDS_Compound both;
+  builder.MakeCompound(both);
+  builder.Add(both, BRepPrimAPI_MakeBox(10, 10, 10).Shape());
+  builder.Add(both, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(20, 0, 0), gp_Dir(0, 0, 1)), 3.0, 10.0).Shape());
+  STEPControl_Writer writer;
+  writer.Transfer(both, STEPControl_AsIs);
+  const std::string plain = path("two.step"), file = path("negative.step");
+  ASSERT_EQ(writer.Write(plain.c_str()), IFSelect_RetDone);
+  const std::string text = read_text(plain);
+  const std::regex circle(R"(CIRCLE\('',(#\d+),3\.\))");
+  ASSERT_TRUE(std::regex_search(text, circle)) << "no circle of radius 3 written";
+  write_text(file, std::regex_replace(text, circle, "CIRCLE('',$1,-3.)", std::regex_constants::format_first_only));
+  EXPECT_EQ(run_tquad({"mesh", plain, "-o", path("plain.vtu")}).exit_status, 0);
+  expect_damaged(file, {}, {file, "is damaged: its solid #", "did not transfer"});
 }
 
 // Problems that take nothing out of the shape are warnings, and the mesh is the one

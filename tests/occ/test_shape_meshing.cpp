@@ -321,6 +321,45 @@ TEST(ShapeMeshing, SurfacesClosedAroundTwoPolesGetTheCubeSphere) {
   }
 }
 
+// Lunes (two meridians between the poles, 30 to 330 degrees wide) and zones (between
+// two parallels, or from a pole to a parallel) of a sphere, as solids: every face
+// meshed, the mesh closed, and every corner of every quad well above 0 against the
+// surface normal and the quad's own normal. A lune wider than about 150 degrees
+// has a smooth rim through its poles, where a template corner is a 180-degree quad.
+TEST(ShapeMeshing, LunesAndZonesOfASphereHaveNoFlatCornerAtTheirPoles) {
+  struct Piece {
+    std::string name;
+    TopoDS_Shape shape;
+    double bound;  // the sine of the sharpest corner, or what a sphere's disk allows
+  };
+  std::vector<Piece> pieces;
+  for (const double degrees : {30.0, 90.0, 180.0, 270.0, 330.0}) {
+    pieces.push_back({"lune " + std::to_string(static_cast<int>(degrees)),
+                      BRepPrimAPI_MakeSphere(10.0, -M_PI / 2, M_PI / 2, degrees * M_PI / 180).Shape(),
+                      std::min(std::sin(degrees * M_PI / 180), 0.5)});
+  }
+  pieces.push_back({"zone", BRepPrimAPI_MakeSphere(10.0, -M_PI / 6, M_PI / 3).Shape(), 0.5});
+  pieces.push_back({"cap to a parallel", BRepPrimAPI_MakeSphere(10.0, -M_PI / 2, M_PI / 3).Shape(), 0.5});
+  for (const Piece& piece : pieces) {
+    for (const double divisor : {10.0, 25.0, 60.0}) {
+      ShapeMeshOptions options;
+      options.size = diagonal(piece.shape) / divisor;
+      const ShapeMeshResult result = mesh_shape(piece.shape, options);
+      const ShapeMesh& mesh = result.mesh;
+      EXPECT_TRUE(mesh.refused_faces.empty()) << piece.name;
+      std::map<std::pair<NodeId, NodeId>, int> uses;
+      for (std::size_t k = 0; k < mesh.quads.size(); ++k) {
+        const Quad& q = mesh.quads[k];
+        const std::array<Vec3, 4> p{mesh.nodes[q[0]], mesh.nodes[q[1]], mesh.nodes[q[2]], mesh.nodes[q[3]]};
+        EXPECT_GT(own_scaled_jacobian(p), 0.9 * piece.bound) << piece.name << " D/" << divisor << " quad " << k;
+        EXPECT_GT(mesh.scaled_jacobian[k], 0.9 * piece.bound) << piece.name << " D/" << divisor << " quad " << k;
+        for (int i = 0; i < 4; ++i) ++uses[std::minmax(q[i], q[(i + 1) % 4])];
+      }
+      for (const auto& [edge, count] : uses) EXPECT_EQ(count, 2) << piece.name << " D/" << divisor << ": open edge";
+    }
+  }
+}
+
 TEST(ShapeMeshing, ConeApexIsAMeshNode) {
   // A pointed cone of height 20 along z: its side's pole is the apex (0, 0, 20); a
   // quad spanning it would cut the tip off.
@@ -1020,12 +1059,20 @@ TEST(ShapeMeshing, FacesWithSeveralHolesAreDecomposed) {
 }
 
 TEST(ShapeMeshing, RefusedFacesNameTheFace) {
-  // A whole sphere: no edge but its seam and two poles.
+  // A drilled cone (generated_parts.h): its side face, with a pole and a hole, is
+  // refused, and named.
+  const TopoDS_Shape cone = drilled_cone(0, 0, 0);
+  const ShapeIndex index(cone);
+  int side = -1;
+  for (int f = 0; f < index.face_count(); ++f) {
+    if (BRepAdaptor_Surface(index.face(f)).GetType() == GeomAbs_Cone) side = f;
+  }
+  ASSERT_GE(side, 0);
   try {
-    mesh_shape(BRepPrimAPI_MakeSphere(10.0).Shape(), ShapeMeshOptions{});
-    FAIL() << "a whole sphere should be refused without --keep-going";
+    mesh_shape(cone, ShapeMeshOptions{});
+    FAIL() << "a drilled cone's side should be refused without --keep-going";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("face 0"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("face " + std::to_string(side)), std::string::npos) << e.what();
   }
 }
 
