@@ -21,6 +21,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable, List, Optional, Sequence, Tuple
 
+import numpy as np
+
 REPO = Path(__file__).resolve().parents[2]
 SHAPES = REPO / "resources" / "shapes"
 
@@ -154,6 +156,9 @@ def cases() -> List[Case]:
         # Boundary files.
         Case("empty boundary file", lambda d: Prepared(_write(d, "empty.json", "")), ["empty.json", "empty"],
              lambda tquad, p: tquad.mesh_boundary([], []), python_expect=["N x 3"]),
+        Case("boundary of no points (crashed the command and the interpreter)",
+             lambda d: Prepared(_boundary(d, "none.json", [], [])), ["none.json", "0 points"],
+             lambda tquad, p: tquad.mesh_boundary(np.zeros((0, 3)), []), python_expect=["0 points"]),
         Case("boundary file that is not JSON", lambda d: Prepared(_write(d, "garbage.json", "{points: ]")),
              ["garbage.json", "invalid JSON"]),
         _boundary_case("odd number of boundary segments", _odd_points, ["15 segments, an odd number"]),
