@@ -60,15 +60,6 @@ void refuse_lost_faces(STEPControl_Reader& reader, const std::string& path) {
   const Handle(Transfer_TransientProcess) process = reader.WS()->TransferReader()->TransientProcess();
   if (model.IsNull() || process.IsNull()) return;
   const auto label = [&](const Handle(Standard_Transient)& entity) { return entity_label(model, entity); };
-  // A solid of the file that did not come through whole: a damaged number in one of
-  // its curves (a circle's radius made negative) made OpenCASCADE drop the whole
-  // solid and transfer the others, meshed with exit 0.
-  for (int i = 1; i <= model->NbEntities(); ++i) {
-    const auto solid = Handle(StepShape_ManifoldSolidBrep)::DownCast(model->Value(i));
-    if (solid.IsNull() || process->IsBound(solid)) continue;
-    throw InputError("'" + path + "' is damaged: its solid " + label(solid) +
-                     " did not transfer; the shape would be meshed without it");
-  }
   for (int i = 1; i <= model->NbEntities(); ++i) {
     const auto shell = Handle(StepShape_ConnectedFaceSet)::DownCast(model->Value(i));
     if (shell.IsNull() || !process->IsBound(shell)) continue;
@@ -83,6 +74,22 @@ void refuse_lost_faces(STEPControl_Reader& reader, const std::string& path) {
       throw InputError("'" + path + "' is damaged: shell " + label(shell) + " lost " + which +
                        ", which did not read or transfer; the shape would be meshed without it");
     }
+  }
+}
+
+// A solid of the file that did not come through whole: a damaged number in one of
+// its curves (a circle's radius made negative) made OpenCASCADE drop the whole solid
+// and transfer the others, meshed with exit 0. Checked after what did not read, which
+// names the entity more precisely.
+void refuse_lost_solids(STEPControl_Reader& reader, const std::string& path) {
+  const Handle(Interface_InterfaceModel) model = reader.Model();
+  const Handle(Transfer_TransientProcess) process = reader.WS()->TransferReader()->TransientProcess();
+  if (model.IsNull() || process.IsNull()) return;
+  for (int i = 1; i <= model->NbEntities(); ++i) {
+    const auto solid = Handle(StepShape_ManifoldSolidBrep)::DownCast(model->Value(i));
+    if (solid.IsNull() || process->IsBound(solid)) continue;
+    throw InputError("'" + path + "' is damaged: its solid " + entity_label(model, solid) +
+                     " did not transfer; the shape would be meshed without it");
   }
 }
 
@@ -216,6 +223,7 @@ TopoDS_Shape read_step_file(const std::string& path, std::vector<std::string>* w
   const TopoDS_Shape shape = read_with(reader, path, "STEP", &explain_empty_transfer);
   refuse_lost_faces(reader, path);
   refuse_partial_reading(reader, path, warnings);
+  refuse_lost_solids(reader, path);
   return shape;
 }
 
