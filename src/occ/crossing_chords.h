@@ -8,7 +8,8 @@
 // segments on the curved edge cure it: on a generated part a notch came within 0.07
 // of an arc of radius 9.6 cut in 11 segments (sagitta 0.2), and 22 clear it. Two
 // lines on a plane are their own chords: a crossing of theirs is the face's own and
-// no count cures it.
+// no count cures it; nor does any count part two segments meeting at one node (a hole
+// touching the outer loop at a vertex).
 #pragma once
 
 #include <vector>
@@ -20,7 +21,7 @@ namespace tquad {
 
 // The shape edges of the first pair of the boundary's segments (its outer loop and
 // holes, in (u, v)) that cross or touch, when one of the two edges at least is not a
-// line on a plane; empty when no segments cross, when they are lines on a plane, or
+// line on a plane and they share no node; empty when no segments cross, when they are lines on a plane, or
 // when the boundary is not a plain (u, v) loop (a pole, polar coordinates).
 std::vector<int> edges_of_crossing_chords(const ShapeIndex& index, int face, const FaceBoundary& boundary);
 

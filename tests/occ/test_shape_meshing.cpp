@@ -25,6 +25,9 @@
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <GeomAbs_SurfaceType.hxx>
 #include <Geom_Ellipse.hxx>
+#include <Geom2d_Line.hxx>
+#include <Geom_Plane.hxx>
+#include <TopLoc_Location.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <gp_Elips.hxx>
 #include <gp_Ax1.hxx>
@@ -357,6 +360,60 @@ TEST(ShapeMeshing, LunesAndZonesOfASphereHaveNoFlatCornerAtTheirPoles) {
       }
       for (const auto& [edge, count] : uses) EXPECT_EQ(count, 2) << piece.name << " D/" << divisor << ": open edge";
     }
+  }
+}
+
+// A 10 x 6 rectangle of the plane z = 0 drilled twice, with, when `point_edge`, a degenerate edge
+// at its corner (10, 0) whose pcurve runs 1e-6 up from there: an edge shorter than
+// its vertex tolerance, as exporters write, marked degenerate though the plane does
+// not collapse anywhere.
+TopoDS_Face rectangle_with_point_edge(bool point_edge) {
+  const Handle(Geom_Plane) plane = new Geom_Plane(gp_Pln());
+  BRep_Builder builder;
+  const gp_Pnt corners[4] = {gp_Pnt(0, 0, 0), gp_Pnt(10, 0, 0), gp_Pnt(10, 6, 0), gp_Pnt(0, 6, 0)};
+  TopoDS_Vertex v[4];
+  for (int i = 0; i < 4; ++i) builder.MakeVertex(v[i], corners[i], 1e-5);
+  TopoDS_Wire wire;
+  builder.MakeWire(wire);
+  for (int i = 0; i < 4; ++i) {
+    builder.Add(wire, BRepBuilderAPI_MakeEdge(v[i], v[(i + 1) % 4]).Edge());
+    if (i == 0 && point_edge) {
+      TopoDS_Edge point;
+      builder.MakeEdge(point);
+      const Handle(Geom2d_Line) up = new Geom2d_Line(gp_Pnt2d(10, 0), gp_Dir2d(0, 1));
+      builder.UpdateEdge(point, up, plane, TopLoc_Location(), 1e-5);
+      builder.Range(point, 0.0, 1e-6);
+      builder.Degenerated(point, Standard_True);
+      builder.Add(point, v[1].Oriented(TopAbs_FORWARD));
+      builder.Add(point, v[1].Oriented(TopAbs_REVERSED));
+      builder.Add(wire, point);
+    }
+  }
+  BRepBuilderAPI_MakeFace face(plane, wire, Standard_True);
+  // Two holes: the face is decomposed into patches.
+  for (const double x : {3.0, 7.0}) {
+    const TopoDS_Edge circle = BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(x, 3, 0), gp_Dir(0, 0, 1)), 1.0)).Edge();
+    face.Add(TopoDS::Wire(BRepBuilderAPI_MakeWire(circle).Wire().Reversed()));
+  }
+  return face.Face();
+}
+
+TEST(ShapeMeshing, ADegenerateEdgeThatIsAPointOfTheChartIsNoPole) {
+  // The face is the same drilled rectangle with the point edge or without it: the same
+  // decomposition and the same quads. Taken for a pole, the point edge had the face
+  // refused ("a hole and a pole").
+  ShapeMeshOptions options;
+  options.size = 1.0;
+  const ShapeMesh plain = mesh_shape(rectangle_with_point_edge(false), options).mesh;
+  const ShapeMesh pointed = mesh_shape(rectangle_with_point_edge(true), options).mesh;
+  ASSERT_EQ(plain.faces.size(), 1u);
+  ASSERT_EQ(pointed.faces.size(), 1u);
+  EXPECT_EQ(pointed.faces[0].template_tree, plain.faces[0].template_tree);
+  EXPECT_EQ(pointed.quads.size(), plain.quads.size());
+  EXPECT_GT(pointed.quads.size(), 0u);
+  ASSERT_EQ(pointed.scaled_jacobian.size(), plain.scaled_jacobian.size());
+  for (std::size_t k = 0; k < pointed.scaled_jacobian.size(); ++k) {
+    EXPECT_NEAR(pointed.scaled_jacobian[k], plain.scaled_jacobian[k], 1e-6) << "quad " << k;
   }
 }
 
