@@ -417,6 +417,46 @@ TEST(ShapeMeshing, ADegenerateEdgeThatIsAPointOfTheChartIsNoPole) {
   }
 }
 
+// A 10 x 6 rectangle of the plane z = 0 with a circular hole of radius 2 touching its
+// bottom side at the one vertex (5, 0) they share.
+TopoDS_Face rectangle_with_touching_hole() {
+  const Handle(Geom_Plane) plane = new Geom_Plane(gp_Pln());
+  BRep_Builder builder;
+  const gp_Pnt corners[5] = {gp_Pnt(0, 0, 0), gp_Pnt(5, 0, 0), gp_Pnt(10, 0, 0), gp_Pnt(10, 6, 0), gp_Pnt(0, 6, 0)};
+  TopoDS_Vertex v[5];
+  for (int i = 0; i < 5; ++i) builder.MakeVertex(v[i], corners[i], 1e-7);
+  TopoDS_Wire outer;
+  builder.MakeWire(outer);
+  for (int i = 0; i < 5; ++i) builder.Add(outer, BRepBuilderAPI_MakeEdge(v[i], v[(i + 1) % 5]).Edge());
+  const gp_Circ circle(gp_Ax2(gp_Pnt(5, 2, 0), gp_Dir(0, 0, 1), gp_Dir(0, -1, 0)), 2.0);
+  TopoDS_Wire hole;
+  builder.MakeWire(hole);
+  builder.Add(hole, BRepBuilderAPI_MakeEdge(circle, v[1], v[1]).Edge());
+  BRepBuilderAPI_MakeFace face(plane, outer, Standard_True);
+  face.Add(TopoDS::Wire(hole.Reversed()));
+  return face.Face();
+}
+
+TEST(ShapeMeshing, AHoleTouchingTheOuterLoopAtAVertexIsNotRefinedInVain) {
+  // The loops' segments meet at the shared vertex at any count: the face is refused
+  // (the boundary touches itself) at once, not after every refinement round split
+  // the circle and the sides for nothing.
+  ShapeMeshOptions options;
+  options.size = 1.0;
+  options.keep_going = true;
+  // Beside a face that meshes (a shape none of whose faces mesh is refused whole).
+  TopoDS_Compound both;
+  BRep_Builder builder;
+  builder.MakeCompound(both);
+  builder.Add(both, rectangle_with_touching_hole());
+  builder.Add(both, BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, 5), gp_Dir(0, 0, 1)), 0, 4, 0, 4).Face());
+  const ShapeMeshResult result = mesh_shape(both, options);
+  ASSERT_EQ(result.mesh.refused_faces.size(), 1u);
+  EXPECT_NE(result.mesh.refused_faces[0].reason.find("touches itself"), std::string::npos)
+      << result.mesh.refused_faces[0].reason;
+  EXPECT_EQ(result.refinement_rounds, 0);
+}
+
 TEST(ShapeMeshing, ConeApexIsAMeshNode) {
   // A pointed cone of height 20 along z: its side's pole is the apex (0, 0, 20); a
   // quad spanning it would cut the tip off.
