@@ -238,9 +238,19 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
     err << "tquad: warning: " << quality.degenerate << " of " << shape.quads.size()
         << " quads are degenerate (a corner's scaled Jacobian within 1e-6 of 0: an angle of 0 or 180 degrees)\n";
   }
+  // A collapsed quad's corners can all be sound (quality.h): it is counted and named
+  // by face, since an edge of the CAD model far under the size makes it, there.
+  const std::vector<std::pair<int, long long>> collapsed_faces =
+      kind == InputKind::shape ? collapsed_quads_per_face(shape) : std::vector<std::pair<int, long long>>{};
   if (quality.collapsed > 0) {
     err << "tquad: warning: " << quality.collapsed << " of " << shape.quads.size()
-        << " quads are collapsed (an edge under 1/1000 of the quad's longest: a triangle in effect)\n";
+        << " quads are collapsed (an edge under 1/1000 of the quad's longest: a triangle in effect)";
+    std::string faces;
+    for (const auto& [face, count] : collapsed_faces) {
+      faces += (faces.empty() ? "" : ", ") + std::to_string(face) + " (" + std::to_string(count) + ")";
+    }
+    if (!faces.empty()) err << ", in faces " << faces << " (a CAD edge there far shorter than the size?)";
+    err << "\n";
   }
   for (const std::string& w : read_warnings) err << "tquad: warning: " << one_line(w) << "\n";
   if (!shape_result.bad_quad_faces.empty()) {
@@ -276,6 +286,9 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
       nlohmann::ordered_json bad_faces = nlohmann::ordered_json::array();
       for (const auto& [face, count] : shape_result.bad_quad_faces) bad_faces.push_back({{"face", face}, {"quads", count}});
       report["bad_quad_faces"] = bad_faces;
+      nlohmann::ordered_json collapsed = nlohmann::ordered_json::array();
+      for (const auto& [face, count] : collapsed_faces) collapsed.push_back({{"face", face}, {"quads", count}});
+      report["collapsed_quad_faces"] = collapsed;
       report["read_warnings"] = read_warnings;
       // Inside "mesh faces", summed over the faces (all threads): every candidate
       // route of each face before smoothing, then smoothing the chosen mesh.

@@ -279,4 +279,17 @@ QualitySummary measure_mesh_quality(ShapeMesh& mesh, const std::optional<Vec3>& 
   return summary;
 }
 
+std::vector<std::pair<int, long long>> collapsed_quads_per_face(const ShapeMesh& mesh) {
+  std::vector<std::pair<int, long long>> out;
+  for (const FaceMesh& face : mesh.faces) {
+    long long count = 0;
+    for (std::int64_t k = face.first_quad; k < face.first_quad + face.quad_count; ++k) {
+      const Quad& q = mesh.quads[static_cast<std::size_t>(k)];
+      if (is_collapsed({mesh.nodes[q[0]], mesh.nodes[q[1]], mesh.nodes[q[2]], mesh.nodes[q[3]]})) ++count;
+    }
+    if (count > 0) out.push_back({face.face, count});
+  }
+  return out;
+}
+
 }  // namespace tquad

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "core/quad_mesh.h"
@@ -144,6 +145,10 @@ QualitySummary measure_mesh_quality(ShapeMesh& mesh, const std::optional<Vec3>& 
 // those of per-quad values measured on a surface (each corner against the surface
 // normal there); below -kSurfaceInvertedBelow is inverted.
 void use_scaled_jacobians(QualitySummary& summary, const std::vector<double>& per_quad);
+
+// Per face of the mesh (mesh.faces' quad ranges) holding collapsed quads
+// (is_collapsed, by their corners), its index and how many, in face order.
+std::vector<std::pair<int, long long>> collapsed_quads_per_face(const ShapeMesh& mesh);
 
 
 }  // namespace tquad

@@ -18,6 +18,12 @@
 #include <gtest/gtest.h>
 
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepFilletAPI_MakeChamfer.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepTools.hxx>
@@ -668,6 +674,51 @@ TEST_F(KeepGoing, WithItTheOtherFacesAreMeshedAndTheRefusedListed) {
   for (int f : meshed) EXPECT_EQ(refused.count(f), 0u) << "face " << f << " both meshed and refused";
   EXPECT_EQ(report["faces"].size(), meshed.size());
   EXPECT_EQ(report["quads"], mesh["quads"].size());
+}
+
+// ---- collapsed quads named by face ----------------------------------------------------
+
+TEST_F(ShapeCli, CollapsedQuadsAreNamedByFace) {
+  // A cube of 10 with one edge chamfered 1e-4: the chamfer is a strip far narrower than
+  // the size, so its quads have an edge under 1/1000 of their longest (collapsed, with
+  // sound corners). They are written, counted and named by face, the strip among them.
+  const TopoDS_Shape cube = BRepPrimAPI_MakeBox(10, 10, 10).Shape();
+  TopTools_IndexedMapOfShape edges;
+  TopExp::MapShapes(cube, TopAbs_EDGE, edges);
+  BRepFilletAPI_MakeChamfer chamfer(cube);
+  chamfer.Add(1e-4, TopoDS::Edge(edges(1)));
+  const TopoDS_Shape part = chamfer.Shape();
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(part, TopAbs_FACE, faces);
+  int strip = -1;
+  for (int i = 1; i <= faces.Extent(); ++i) {
+    GProp_GProps props;
+    BRepGProp::SurfaceProperties(faces(i), props);
+    if (props.Mass() < 0.01) strip = i - 1;
+  }
+  ASSERT_GE(strip, 0);
+  const std::string file = path("chamfered_cube.brep");
+  ASSERT_TRUE(BRepTools::Write(part, file.c_str()));
+  const RunResult r = run_tquad({"mesh", file, "-o", path("chamfered.vtu"), "--report", "json"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json report = json::parse(r.out);
+  const long long collapsed = report["quality"]["collapsed"].get<long long>();
+  ASSERT_GT(collapsed, 0);
+  long long listed = 0;
+  bool strip_listed = false;
+  for (const json& f : report["collapsed_quad_faces"]) {
+    const int face = f["face"].get<int>();
+    EXPECT_GE(face, 0);
+    EXPECT_LT(face, faces.Extent());
+    EXPECT_GT(f["quads"].get<long long>(), 0);
+    listed += f["quads"].get<long long>();
+    strip_listed = strip_listed || face == strip;
+  }
+  EXPECT_EQ(listed, collapsed);
+  EXPECT_TRUE(strip_listed) << report["collapsed_quad_faces"].dump();
+  EXPECT_NE(r.err.find("quads are collapsed"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(std::to_string(strip) + " ("), std::string::npos) << r.err;
+  EXPECT_TRUE(report["bad_quad_faces"].empty());
 }
 
 }  // namespace
