@@ -241,7 +241,8 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
   // A collapsed quad's corners can all be sound (quality.h): it is counted and named
   // by face, since an edge of the CAD model far under the size makes it, there.
   const std::vector<std::pair<int, long long>> collapsed_faces =
-      kind == InputKind::shape ? collapsed_quads_per_face(shape) : std::vector<std::pair<int, long long>>{};
+      kind == InputKind::shape && quality.collapsed > 0 ? collapsed_quads_per_face(shape)
+                                                        : std::vector<std::pair<int, long long>>{};
   if (quality.collapsed > 0) {
     err << "tquad: warning: " << quality.collapsed << " of " << shape.quads.size()
         << " quads are collapsed (an edge under 1/1000 of the quad's longest: a triangle in effect)";

@@ -21,8 +21,9 @@ namespace tquad {
 
 // The shape edges of the first pair of the boundary's segments (its outer loop and
 // holes, in (u, v)) that cross or touch, when one of the two edges at least is not a
-// line on a plane and they share no node; empty when no segments cross, when they are lines on a plane, or
-// when the boundary is not a plain (u, v) loop (a pole, polar coordinates).
+// line on a plane and they share no node; empty when no other segments cross, when
+// they are lines on a plane, or when the boundary is not a plain (u, v) loop (a pole,
+// polar coordinates).
 std::vector<int> edges_of_crossing_chords(const ShapeIndex& index, int face, const FaceBoundary& boundary);
 
 }  // namespace tquad

@@ -123,14 +123,36 @@ double angle_around_pole(const BRepAdaptor_Surface& surface, const PolarMap& m) 
   return distance_sum > 0 ? circle / (distance_sum / samples) : 0.0;
 }
 
+// Under this fraction of the face's (u, v) extent in both directions, a degenerate
+// edge's pcurve is a point of the chart, not a pole (is_pole_edge).
+constexpr double kChartPointSpan = 1e-3;
+
 }  // namespace
+
+bool is_pole_edge(const TopoDS_Edge& edge, const TopoDS_Face& face) {
+  if (!BRep_Tool::Degenerated(edge)) return false;
+  double f = 0, l = 0;
+  const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, f, l);
+  if (pcurve.IsNull()) return true;
+  double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  double du = 0, dv = 0;
+  const gp_Pnt2d ends[3] = {pcurve->Value(f), pcurve->Value(0.5 * (f + l)), pcurve->Value(l)};
+  for (const gp_Pnt2d& a : ends) {
+    for (const gp_Pnt2d& b : ends) {
+      du = std::max(du, std::abs(a.X() - b.X()));
+      dv = std::max(dv, std::abs(a.Y() - b.Y()));
+    }
+  }
+  return du > kChartPointSpan * (u1 - u0) || dv > kChartPointSpan * (v1 - v0);
+}
 
 double face_pole_angle(const TopoDS_Face& face) {
   const BRepAdaptor_Surface surface(face);
   if (!surface.IsUPeriodic()) return 0.0;
   for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
     const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
-    if (!BRep_Tool::Degenerated(edge)) continue;
+    if (!is_pole_edge(edge, face)) continue;
     double first = 0, last = 0;
     const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
     if (pcurve.IsNull()) return 0.0;
@@ -323,25 +345,6 @@ struct WireWalk {
   double pole_v = 0;  // v of the first degenerate edge
 };
 
-// Under this fraction of the face's (u, v) extent in both directions, a degenerate
-// edge's pcurve is a point of the chart, not a pole.
-constexpr double kChartPointSpan = 1e-3;
-
-// Whether a degenerate edge (one 3D point) is a point of the face's chart too: its
-// pcurve spans almost nothing of the face's (u, v) box. A pole's pcurve runs along the
-// whole line the surface collapses on (a sphere's or a cone's: the full u period); an
-// exporter also marks an edge shorter than its vertex tolerance degenerate, where the
-// surface does not collapse at all. The wire walk adds no node for either; only a
-// pole makes the face one meshed around its pole or in space.
-bool is_chart_point(const TopoDS_Face& face, const Geom2d_Curve& pcurve, double f, double l) {
-  double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
-  BRepTools::UVBounds(face, u0, u1, v0, v1);
-  const gp_Pnt2d a = pcurve.Value(f), b = pcurve.Value(l), m = pcurve.Value(0.5 * (f + l));
-  const double du = std::max(std::abs(a.X() - b.X()), std::max(std::abs(a.X() - m.X()), std::abs(b.X() - m.X())));
-  const double dv = std::max(std::abs(a.Y() - b.Y()), std::max(std::abs(a.Y() - m.Y()), std::abs(b.Y() - m.Y())));
-  return du <= kChartPointSpan * (u1 - u0) && dv <= kChartPointSpan * (v1 - v0);
-}
-
 WireWalk walk_wire(const TopoDS_Wire& wire, const TopoDS_Face& face, int face_index, const ShapeIndex& index,
                    const std::vector<EdgeNodes>& edges) {
   WireWalk w;
@@ -354,7 +357,7 @@ WireWalk walk_wire(const TopoDS_Wire& wire, const TopoDS_Face& face, int face_in
     const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(occurrence, face, f, l);
     if (pcurve.IsNull()) throw std::runtime_error("edge " + std::to_string(e) + " has no pcurve on face " + std::to_string(face_index));
     if (en.degenerate) {
-      if (!is_chart_point(face, *pcurve, f, l)) {
+      if (is_pole_edge(occurrence, face)) {
         if (!w.has_degenerate_edge) w.pole_v = pcurve->Value(0.5 * (f + l)).Y();
         w.has_degenerate_edge = true;
       }

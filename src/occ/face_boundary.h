@@ -96,7 +96,15 @@ constexpr double kSectorAngleBelow = 300.0 * M_PI / 180.0;
 constexpr double kSectorRimTurn = 20.0 * M_PI / 180.0;  // a sharper rim vertex: no sector
 std::optional<PoleSector> pole_sector(const FaceBoundary& boundary, const TopoDS_Face& face);
 
-// How far the surface of a face with a pole (a degenerate edge) turns around it, in
+// Whether a degenerate edge (one 3D point) of the face is a pole, the one test every
+// route and count rule asks: its pcurve runs along a line the surface collapses on
+// (a sphere's or a cone's: the full u period). An exporter also marks an edge shorter
+// than its vertex tolerance degenerate where the surface does not collapse; its
+// pcurve spans under 1/1000 of the face's (u, v) box in both directions: a point of
+// the chart, which the face's loop passes through like any vertex.
+bool is_pole_edge(const TopoDS_Edge& edge, const TopoDS_Face& face);
+
+// How far the surface of a face with a pole (is_pole_edge) turns around it, in
 // radians, measured next to the pole: 2 pi sin(half-angle) on a cone, 2 pi on a
 // sphere; 0 when the face has no pole or is not periodic in u.
 double face_pole_angle(const TopoDS_Face& face);

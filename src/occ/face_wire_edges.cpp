@@ -7,6 +7,8 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Wire.hxx>
 
+#include "occ/face_boundary.h"
+
 namespace tquad {
 
 WireEdges face_wires_with_poles(const ShapeIndex& index, int face) {
@@ -17,7 +19,10 @@ WireEdges face_wires_with_poles(const ShapeIndex& index, int face) {
     const TopoDS_Wire wire = TopoDS::Wire(w.Current());
     std::vector<int> edges;
     for (BRepTools_WireExplorer it(wire, f); it.More(); it.Next()) {
-      edges.push_back(BRep_Tool::Degenerated(it.Current()) ? kPoleEdge : index.edge_index(it.Current()));
+      const TopoDS_Edge& edge = it.Current();
+      if (!BRep_Tool::Degenerated(edge)) edges.push_back(index.edge_index(edge));
+      else if (is_pole_edge(edge, f)) edges.push_back(kPoleEdge);
+      // A degenerate edge that is a point of the chart is no side of the face.
     }
     if (wire.IsSame(outer)) wires.insert(wires.begin(), std::move(edges));
     else wires.push_back(std::move(edges));

@@ -13,11 +13,12 @@ namespace tquad {
 using WireEdges = std::vector<std::vector<int>>;
 std::optional<WireEdges> face_wire_edges(const ShapeIndex& index, int face);
 
-// The edge that stands for a degenerate edge (a pole) in face_wires_with_poles.
+// The edge that stands for a pole (is_pole_edge, face_boundary.h) in face_wires_with_poles.
 inline constexpr int kPoleEdge = -1;
 
 // A face's wires as edge lists in the order the wire explorer walks them (the outer
-// wire first), degenerate edges as kPoleEdge: the one walk face_wire_edges and the
+// wire first), poles as kPoleEdge, other degenerate edges (points of the chart) left
+// out: the one walk face_wire_edges and the
 // three-edge faces beside poles (interval_assignment.h) read.
 WireEdges face_wires_with_poles(const ShapeIndex& index, int face);
 

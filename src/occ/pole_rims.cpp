@@ -27,7 +27,7 @@ std::vector<int> pole_rim_edges(const ShapeIndex& index, int f) {
   for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
     const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
     if (BRep_Tool::Degenerated(edge)) {
-      pole = true;
+      pole = pole || is_pole_edge(edge, face);
     } else if (BRep_Tool::IsClosed(edge, face)) {
       seam = true;
     } else {

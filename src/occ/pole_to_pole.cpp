@@ -12,6 +12,7 @@
 
 #include "core/cube_sphere.h"
 #include "core/face_refusal.h"
+#include "occ/face_boundary.h"
 #include "occ/occ_vec.h"
 
 namespace tquad {
@@ -25,7 +26,7 @@ int closed_seam_edge(const ShapeIndex& index, int f) {
   for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
     const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
     if (BRep_Tool::Degenerated(edge)) {
-      ++poles;
+      if (is_pole_edge(edge, face)) ++poles;
     } else if (BRep_Tool::IsClosed(edge, face)) {
       const int e = index.edge_index(edge);
       if (seam >= 0 && seam != e) return -1;
