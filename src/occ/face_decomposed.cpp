@@ -16,6 +16,7 @@
 #include "core/mapped_ring.h"
 #include "core/face_decomposition.h"
 #include "core/hole_rings.h"
+#include "core/touching_loops.h"
 #include "core/face_refusal.h"
 #include "core/input_error.h"
 #include "core/o_grid.h"
@@ -96,6 +97,7 @@ class FaceChart {
     if (signed_uv_area(b.uv) < 0) chart_.mirror = -1;
     add_loop(b.uv, b.nodes, vertex_nodes, false);
     for (const NodeLoop& hole : b.holes) add_loop(hole.uv, hole.nodes, vertex_nodes, true);
+    splice_touching_holes();
     try {
       check_planar_domain(domain_);  // every route on this chart starts from a valid domain
     } catch (const InputError& e) {
@@ -203,6 +205,23 @@ class FaceChart {
       previous_point = point;
     }
     return turn;
+  }
+
+  // A hole through a vertex of the outer loop (or of another hole) is spliced into
+  // that loop (core/touching_loops.h); the vertex's node stands for both its copies.
+  void splice_touching_holes() {
+    const std::vector<long long> ids(boundary_nodes_.begin(), boundary_nodes_.end());
+    SplicedDomain spliced = splice_touching_loops(domain_, ids);
+    if (spliced.splices == 0) return;
+    domain_ = std::move(spliced.domain);
+    std::vector<NodeId> nodes;
+    std::vector<Vec3> own;
+    for (int i : spliced.source) {
+      nodes.push_back(boundary_nodes_[i]);
+      own.push_back(own_[i]);
+    }
+    boundary_nodes_ = std::move(nodes);
+    own_ = std::move(own);
   }
 
   // Holes run clockwise in the chart, the outer loop counter-clockwise. `own`: the
