@@ -229,7 +229,9 @@ IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector
   // long sides (band_balance.h).
   std::vector<double> goals(edges, 1.0);
   for (int e = 0; e < edges; ++e) if (segments[e] > 0) goals[e] = goal(e);
-  report.balanced_rings = balance_rings(wires, meshed, goals, floors, segments, chains);
+  std::vector<double> extents(edges, 1.0);
+  for (int e = 0; e < edges; ++e) if (segments[e] > 0) extents[e] = lengths[e] / size;
+  report.balanced_rings = balance_rings(wires, meshed, goals, extents, floors, segments, chains);
   std::vector<std::pair<int, int>> band_sides;
   report.balanced_bands = balance_narrow_bands(index, meshed, segments, chains, kept, &band_sides);
   // Faces left odd are made even by changing whole chains (which keeps their faces

@@ -31,10 +31,35 @@ int total(const std::vector<int>& edges, const std::vector<int>& segments) {
   return sum;
 }
 
+// The two rims of a ring: its two wires, or its one wire's runs on either side of a
+// seam (the one edge the wire meets twice: a tube's band cut open along its seam).
+// Empty when the face is no ring.
+std::vector<std::vector<int>> ring_rims(const WireEdges& wires) {
+  if (wires.size() == 2) return wires;
+  if (wires.size() != 1) return {};
+  const std::vector<int>& wire = wires[0];
+  const int n = static_cast<int>(wire.size());
+  int first = -1, second = -1;
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      if (wire[i] != wire[j]) continue;
+      if (first >= 0) return {};  // two seams: no ring
+      first = i;
+      second = j;
+    }
+  }
+  if (first < 0) return {};
+  std::vector<std::vector<int>> rims(2);
+  for (int k = first + 1; k < second; ++k) rims[0].push_back(wire[k]);
+  for (int k = second + 1; k < n + first; ++k) rims[1].push_back(wire[k % n]);
+  if (rims[0].empty() || rims[1].empty()) return {};
+  return rims;
+}
+
 }  // namespace
 
 int balance_rings(FaceWireEdges& face_wires, const std::vector<char>& meshed, const std::vector<double>& goal,
-                  const std::vector<int>& floor, std::vector<int>& segments,
+                  const std::vector<double>& extent, const std::vector<int>& floor, std::vector<int>& segments,
                   const std::vector<std::vector<int>>& chains) {
   const ShapeIndex& index = face_wires.index();
   // Units: the chains, then each edge not in one.
@@ -49,13 +74,15 @@ int balance_rings(FaceWireEdges& face_wires, const std::vector<char>& meshed, co
   for (int f = 0; f < index.face_count(); ++f) {
     if (!meshed[f]) continue;
     const auto& wires = face_wires.of(f);
-    if (!wires || wires->size() != 2) continue;
-    const std::vector<int>& a = (*wires)[0];
-    const std::vector<int>& b = (*wires)[1];
-    double goal_a = 0, goal_b = 0;
-    for (int e : a) goal_a += goal[e];
-    for (int e : b) goal_b += goal[e];
-    if (!near_enough_to_chain(goal_a, goal_b)) continue;
+    if (!wires) continue;
+    const std::vector<std::vector<int>> rims = ring_rims(*wires);
+    if (rims.empty()) continue;
+    const std::vector<int>& a = rims[0];
+    const std::vector<int>& b = rims[1];
+    double goal_a = 0, goal_b = 0, extent_a = 0, extent_b = 0;
+    for (int e : a) { goal_a += goal[e]; extent_a += extent[e]; }
+    for (int e : b) { goal_b += goal[e]; extent_b += extent[e]; }
+    if (!near_enough_to_chain(goal_a, goal_b) && !near_enough_to_chain(extent_a, extent_b)) continue;
     int gap = total(a, segments) - total(b, segments);
     if (gap == 0) continue;
     for (int step = 0; step < kMaxSteps && gap != 0; ++step) {

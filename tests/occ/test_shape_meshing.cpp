@@ -13,6 +13,7 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
 #include <GC_MakeArcOfCircle.hxx>
 #include <TopExp.hxx>
 #include <TopTools_MapOfShape.hxx>
@@ -858,6 +859,52 @@ TEST(ShapeMeshing, WasherHalvesShareTheRingBalanceEvenly) {
   std::printf("[ washer   ] %s, %zu quads, worst %.3f\n", result.mesh.faces[0].template_tree.c_str(),
               result.mesh.quads.size(), worst);
   EXPECT_GT(worst, 0.8);
+}
+
+// A disk of radius 5, 0.05 thick, with six thin bars standing across its top rim:
+// the cylinder's side is a band cut open along its seam whose top rim is twelve arcs
+// (split where the bars cross it) and whose bottom rim is one circle. The bars'
+// widths alternate so that the arcs do too.
+TopoDS_Shape disk_with_bars_across_its_rim() {
+  TopoDS_Shape shape = BRepPrimAPI_MakeCylinder(5.0, 0.05).Shape();
+  for (int k = 0; k < 6; ++k) {
+    const double angle = k * M_PI / 3;
+    const double width = k % 2 == 0 ? 0.6 : 0.3;
+    gp_Trsf turn;
+    turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), angle);
+    const TopoDS_Shape bar =
+        BRepBuilderAPI_Transform(BRepPrimAPI_MakeBox(gp_Pnt(4.0, -width / 2, 0.05), 2.0, width, 0.5).Shape(), turn).Shape();
+    shape = BRepAlgoAPI_Fuse(shape, bar).Shape();
+  }
+  return shape;
+}
+
+TEST(ShapeMeshing, ABandAroundASeamGetsEqualRims) {
+  // The band is one segment high at size 0.5: with rims of different totals it has
+  // no room for a transition (the templates' T1 and T2 need two rows) and its quads
+  // fold. Its rims are balanced as a ring's two loops are (ring_balance.h).
+  ShapeMeshOptions options;
+  options.size = 0.5;
+  const TopoDS_Shape shape = disk_with_bars_across_its_rim();
+  const ShapeIndex index(shape);
+  int band = -1;
+  for (int f = 0; f < index.face_count(); ++f) {
+    if (BRepAdaptor_Surface(index.face(f)).GetType() == GeomAbs_Cylinder) band = f;
+  }
+  ASSERT_GE(band, 0);
+  const ShapeMeshResult result = mesh_shape(shape, options);
+  EXPECT_TRUE(result.mesh.refused_faces.empty());
+  EXPECT_GE(result.balanced_rings, 1);
+  const auto meshed = std::find_if(result.mesh.faces.begin(), result.mesh.faces.end(),
+                                   [&](const FaceMesh& f) { return f.face == band; });
+  ASSERT_NE(meshed, result.mesh.faces.end());
+  // Equal rims of n segments, one segment high: one row of n quads.
+  const double circumference = 2 * M_PI * 5.0;
+  EXPECT_GE(meshed->quad_count, static_cast<std::int64_t>(circumference / options.size) - 2);
+  EXPECT_LE(meshed->quad_count, static_cast<std::int64_t>(2 * circumference / options.size));
+  for (std::int64_t q = meshed->first_quad; q < meshed->first_quad + meshed->quad_count; ++q) {
+    EXPECT_GT(result.mesh.scaled_jacobian[q], 1e-6) << "quad " << q;
+  }
 }
 
 // One face of a shared part meshed whole at the default size (--keep-going): its
