@@ -261,6 +261,16 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
     bad_faces.append(d);
   }
   out["bad_quad_faces"] = bad_faces;
+  py::list collapsed_faces;
+  if (quality.collapsed > 0) {
+    for (const auto& [face, count] : collapsed_quads_per_face(result.mesh)) {
+      py::dict d;
+      d["face"] = face;
+      d["quads"] = count;
+      collapsed_faces.append(d);
+    }
+  }
+  out["collapsed_quad_faces"] = collapsed_faces;
   out["read_warnings"] = read_warnings;
   return out;
 }

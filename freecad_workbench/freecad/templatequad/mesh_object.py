@@ -213,6 +213,9 @@ class TemplateQuadMesh(StatelessProxy):
         for line in obj.RefusedFaces:
             FreeCAD.Console.PrintWarning(
                 f"TemplateQuad: {obj.Label}: {obj.Part.Label} {line} (not meshed)\n")
+        collapsed = meshing.collapsed_warning(mesh)
+        if collapsed:
+            FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {collapsed}\n")
         unsewn = meshing.unsewn_warning(obj.UnsewnEdges, obj.Sew)
         if unsewn:
             FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {unsewn}\n")

@@ -98,6 +98,9 @@ class Mesh:
             kept with inverted, degenerate or folded quads (a corner's scaled
             Jacobian at or below 1e-6 against the surface normal or the quad's
             own): dicts ``face``, ``quads``. Without it such faces are refused.
+        collapsed_quad_faces: for a shape, the faces with collapsed quads (an edge
+            under 1/1000 of the quad's longest, its corners sound: a CAD edge far
+            shorter than the size makes them): dicts ``face``, ``quads``.
     """
 
     def __init__(self, data: dict):
@@ -111,6 +114,7 @@ class Mesh:
         self.unsewn_edge_pairs: List[Tuple[int, int]] = data.get("unsewn_edge_pairs", [])
         self.sewn_edges: int = data.get("sewn_edges", 0)
         self.bad_quad_faces: List[dict] = data.get("bad_quad_faces", [])
+        self.collapsed_quad_faces: List[dict] = data.get("collapsed_quad_faces", [])
         self.read_warnings: List[str] = data.get("read_warnings", [])
         self.scaled_jacobian: np.ndarray = data["scaled_jacobian"]
         self.lee_lo: np.ndarray = data["lee_lo"]

@@ -21,6 +21,7 @@ class Mesh:
     unsewn_edge_pairs: List[Tuple[int, int]]
     sewn_edges: int
     bad_quad_faces: List[dict]
+    collapsed_quad_faces: List[dict]
     read_warnings: List[str]
     scaled_jacobian: np.ndarray
     lee_lo: np.ndarray
