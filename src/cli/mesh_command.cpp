@@ -299,6 +299,7 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
                                    {"edges", shape_result.chained_edges},
                                    {"balanced_bands", shape_result.balanced_bands},
                                    {"balanced_rings", shape_result.balanced_rings},
+                                   {"aligned_bands", shape_result.aligned_bands},
                                    {"quartered_pole_rims", shape_result.quartered_pole_rims}};
       nlohmann::ordered_json changes = nlohmann::ordered_json::array();
       for (const IntervalChange& c : shape_result.changes) {

@@ -12,9 +12,6 @@ namespace tquad {
 
 namespace {
 
-// Bands this many segments wide or less get equal long sides.
-constexpr int kNarrowBand = 2;
-
 // The shape edges along one side of a face, and its segment count.
 struct Side {
   std::vector<int> edges;

@@ -19,6 +19,9 @@
 
 namespace tquad {
 
+// Bands this many segments wide or less get equal long sides.
+constexpr int kNarrowBand = 2;
+
 // segments: per edge, changed in place; chains: edges kept equal. Returns the number
 // of faces balanced.
 // kept: spacings to take and keep (discretize_edges), or none.

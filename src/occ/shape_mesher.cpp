@@ -1,5 +1,7 @@
 #include "occ/shape_mesher.h"
 
+#include "occ/band_alignment.h"
+
 #include <BRepBndLib.hxx>
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
@@ -320,6 +322,7 @@ class ShapeMeshContext {
     previous_nodes_ = std::move(result_.mesh.nodes);
     result_.mesh.nodes.clear();
     edges_ = discretize_edges(index_, segments_, result_.mesh.nodes, &spacings_);
+    result_.aligned_bands = align_narrow_bands(index_, meshed_, edges_, result_.mesh.nodes, &spacings_);
     if (first) check_requested_corners(index_, meshed_, options_.corners, edges_, result_.mesh.nodes);
   }
 

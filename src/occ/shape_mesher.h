@@ -115,6 +115,7 @@ struct ShapeMeshResult {
   int interval_chains = 0;               // chains of opposite edges given one count
   int chained_edges = 0;                 // edges in those chains
   int balanced_bands = 0;                // faces one segment wide given equal long sides
+  int aligned_bands = 0;                 // bands whose long sides' nodes face each other (band_alignment.h)
   int balanced_rings = 0;                // faces of two loops given equal totals
   int quartered_pole_rims = 0;           // disks around a pole given a multiple of 4 on their rim
   // Edges of meshed faces that lie on each other without being one edge (the file's

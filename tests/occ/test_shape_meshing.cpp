@@ -907,6 +907,36 @@ TEST(ShapeMeshing, ABandAroundASeamGetsEqualRims) {
   }
 }
 
+// A strip 10 long and 0.2 wide in the plane z = 0: its bottom side one edge, its top
+// side two edges of 7 and 3, so that arc length spaces the two sides differently.
+TopoDS_Face strip_of_unequal_sides() {
+  BRep_Builder builder;
+  const gp_Pnt corners[5] = {gp_Pnt(0, 0, 0), gp_Pnt(10, 0, 0), gp_Pnt(10, 0.2, 0), gp_Pnt(3, 0.2, 0),
+                             gp_Pnt(0, 0.2, 0)};
+  TopoDS_Vertex v[5];
+  for (int i = 0; i < 5; ++i) builder.MakeVertex(v[i], corners[i], 1e-7);
+  BRepBuilderAPI_MakeWire wire;
+  for (int i = 0; i < 5; ++i) wire.Add(BRepBuilderAPI_MakeEdge(v[i], v[(i + 1) % 5]).Edge());
+  return BRepBuilderAPI_MakeFace(wire.Wire(), Standard_True).Face();
+}
+
+TEST(ShapeMeshing, ANarrowBandsLongSidesFaceEachOther) {
+  // At size 1.2 both long sides get 9 segments, the top 3 + 6 (spacings 1 and 1.17),
+  // the bottom 9 of 1.11: by arc length, node i of one side lies up to 0.33 along
+  // from node i of the other across a band 0.2 wide, and the quads lean (worst scaled
+  // Jacobian 0.5). The bottom, one edge, takes its nodes across from the top's
+  // (band_alignment.h): the quads are rectangles.
+  ShapeMeshOptions options;
+  options.size = 1.2;
+  const ShapeMeshResult result = mesh_shape(strip_of_unequal_sides(), options);
+  ASSERT_TRUE(result.mesh.refused_faces.empty());
+  EXPECT_EQ(result.aligned_bands, 1);
+  EXPECT_EQ(result.mesh.quads.size(), 9u);
+  for (std::size_t q = 0; q < result.mesh.quads.size(); ++q) {
+    EXPECT_GT(result.mesh.scaled_jacobian[q], 0.99) << "quad " << q;
+  }
+}
+
 // One face of a shared part meshed whole at the default size (--keep-going): its
 // template tree begins with `tree` and its worst scaled Jacobian (printed) is over
 // `worst_above`. Skips when the parts are absent.
