@@ -283,6 +283,8 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
       if (shape.second_order()) report["straightened_mid_nodes"] = shape_result.straightened_mid_nodes;
       report["edge_size"] = shape_result.size;
       report["refinement_rounds"] = shape_result.refinement_rounds;
+      report["refused_per_round"] = shape_result.refused_per_round;
+      report["kept_round"] = shape_result.kept_round;
       report["off_surface_quads"] = shape_result.off_surface;
       nlohmann::ordered_json bad_faces = nlohmann::ordered_json::array();
       for (const auto& [face, count] : shape_result.bad_quad_faces) bad_faces.push_back({{"face", face}, {"quads", count}});

@@ -13,6 +13,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -182,12 +183,24 @@ class ShapeMeshContext {
     // kRefinements times: doubling one face's edges changes its neighbours' counts,
     // which may need their own round).
     constexpr int kRefinements = 4;
+    // A round is kept only when it leaves fewer faces refused than every round before
+    // it: doubling counts changes the neighbours' counts too, and on some shapes the
+    // later rounds refuse more faces than the first (a ball screw's thread faces).
+    std::optional<RoundState> best;
     for (int round = 0;; ++round) {
       stage("assign intervals", [&] { assign_intervals(); });
       stage("discretize edges", [&] { discretize(round == 0); });
       stage("mesh faces", [&] { mesh_faces(); });
+      const int refused = refused_faces();
+      result_.refused_per_round.push_back(refused);
+      result_.kept_round = round;
       if (round >= kRefinements || !refine_edges_of_inverted_faces()) break;
+      if (!best || refused < best->refused) best = save_round(refused, round);
       ++result_.refinement_rounds;
+    }
+    if (best && result_.refused_per_round.back() > best->refused) {
+      result_.kept_round = best->round;
+      restore_round(std::move(*best));
     }
     stage("assemble", [&] { assemble(); });
     if (options_.order == 2) stage("mid-edge nodes", [&] { add_middles(); });
@@ -362,6 +375,44 @@ class ShapeMeshContext {
       // (How many were meshed before the workers stopped depends on the threads.)
       throw InputError("the faces together have more quads" + over_limit_text());
     }
+  }
+
+  // What a round leaves for assembly: counts, edges, nodes, face outcomes.
+  struct RoundState {
+    int refused = 0, round = 0;
+    std::vector<int> segments;
+    std::vector<EdgeNodes> edges;
+    std::vector<Vec3> nodes;
+    std::vector<FaceOutcome> outcomes;
+    std::vector<IntervalChange> changes;
+    int interval_chains = 0, chained_edges = 0, balanced_bands = 0, balanced_rings = 0, quartered_pole_rims = 0,
+        aligned_bands = 0;
+  };
+
+  int refused_faces() const {
+    int refused = 0;
+    for (int f = 0; f < index_.face_count(); ++f) refused += meshed_[f] && !outcomes_[f].ok ? 1 : 0;
+    return refused;
+  }
+
+  RoundState save_round(int refused, int round) const {
+    return RoundState{refused, round, segments_, edges_, result_.mesh.nodes, outcomes_, result_.changes,
+                      result_.interval_chains, result_.chained_edges, result_.balanced_bands,
+                      result_.balanced_rings, result_.quartered_pole_rims, result_.aligned_bands};
+  }
+
+  void restore_round(RoundState&& kept) {
+    segments_ = std::move(kept.segments);
+    edges_ = std::move(kept.edges);
+    result_.mesh.nodes = std::move(kept.nodes);
+    outcomes_ = std::move(kept.outcomes);
+    result_.changes = std::move(kept.changes);
+    result_.interval_chains = kept.interval_chains;
+    result_.chained_edges = kept.chained_edges;
+    result_.balanced_bands = kept.balanced_bands;
+    result_.balanced_rings = kept.balanced_rings;
+    result_.quartered_pole_rims = kept.quartered_pole_rims;
+    result_.aligned_bands = kept.aligned_bands;
   }
 
   bool refine_edges_of_inverted_faces() {

@@ -111,6 +111,10 @@ struct ShapeMeshResult {
   std::map<std::string, double> stage_seconds;  // wall time per stage, summed over rounds
   long long off_surface = 0;             // quads cutting across their surface (face_mesher.h)
   int refinement_rounds = 0;            // times small faces' edges were doubled
+  // Faces refused after each round (round 0 first), and the round whose meshes were
+  // kept: the last one, unless an earlier one refused fewer faces (the earliest such).
+  std::vector<int> refused_per_round;
+  int kept_round = 0;
   long long straightened_mid_nodes = 0;  // second order: middles put on their chords (mid_edge_nodes.h)
   int interval_chains = 0;               // chains of opposite edges given one count
   int chained_edges = 0;                 // edges in those chains

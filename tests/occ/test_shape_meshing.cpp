@@ -640,6 +640,11 @@ TEST(ShapeMeshing, GeneratedMachinedParts) {
     for (const RefusedFace& f : result.mesh.refused_faces) {
       EXPECT_EQ(f.code, RefusalCode::damaged) << f.reason;
     }
+    // The round kept is one that refused the fewest faces.
+    ASSERT_EQ(result.refused_per_round.size(), static_cast<std::size_t>(result.refinement_rounds + 1));
+    const int fewest = *std::min_element(result.refused_per_round.begin(), result.refused_per_round.end());
+    EXPECT_EQ(static_cast<int>(result.mesh.refused_faces.size()), fewest);
+    EXPECT_EQ(result.refused_per_round[result.kept_round], fewest);
     std::printf("[ parts    ] seed %2u: faces %3d meshed %3d refused %d (damaged), quads %6lld, worst scaled Jacobian %.3f\n",
                 seed, r.faces, r.meshed, r.refused, r.quads, worst);
     faces += r.faces;
