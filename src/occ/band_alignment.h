@@ -1,19 +1,18 @@
 // align_narrow_bands: the nodes of a band's two long sides face each other.
 //
-// A band one or two segments wide (two opposite sides of at most kNarrowBand segments:
-// band_balance.h gives its long sides equal counts) and narrower than half its
-// segments (kNarrowEnd) is a mapped grid whose quads join
-// node i of one long side to node i of the other. Each side is cut by its own arc
-// length, so where the sides differ in length or start offset (a tapered strip, a
-// helical groove's flank, a band between a circle and a row of tooth arcs) node i of
-// one lies far along from node i of the other, and across a band much narrower than
-// its segments that shear folds the quads: a strip 1 wide with segments of 5.6 had
-// corners of -0.1. Here a long side that is one edge (the follower) takes its inner
-// nodes where the other side's (the leader's) nodes project onto its curve, so the
-// grid's lines cross the band. The leader's edges stay as they are and are never
-// followers afterwards (an edge moves at most once, for one band); a projection that
-// is not in order along the follower, or leaves a segment under kShortestShare of
-// the even one, leaves the follower as it was.
+// A band one or two segments wide (two opposite sides of at most kNarrowBand
+// segments: band_balance.h gives its long sides equal counts) and narrower than half
+// its segments (kNarrowEnd) is a mapped grid whose quads join node i of one long side
+// to node i of the other. Each side is cut by its own arc length, so where the sides
+// differ in length or start offset (a tapered strip, a helical groove's flank, a band
+// between a circle and a row of tooth arcs) node i of one lies far along from node i
+// of the other, and across a band much narrower than its segments that shear
+// flattens or folds the quads. Here a long side that is one edge (the follower) takes
+// its inner nodes where the other side's (the leader's) nodes project onto its curve,
+// so the grid's lines cross the band. The leader's edges stay as they are and are
+// never followers afterwards (an edge moves at most once, for one band); a projection
+// that is not in order along the follower, or leaves a segment under kShortestShare
+// of the even one, leaves the follower as it was.
 #pragma once
 
 #include <vector>
@@ -23,7 +22,11 @@
 
 namespace tquad {
 
-constexpr double kShortestShare = 0.25;
+// A follower keeps every segment at least this share of its even one: shorter ones
+// would crowd the face on its other side. Low, because a leader side often ends in a
+// short edge of its own, whose nodes the follower must face too (or the band's quads
+// there lean across the whole short edge).
+constexpr double kShortestShare = 0.05;
 // A band is narrow when every leader node lies nearer the follower's curve than this
 // share of the long sides' mean segment: wider, its quads have room to lean, and
 // moving a shared edge's nodes would only unsettle the faces on its other side.
