@@ -181,6 +181,18 @@ std::vector<int> loop_sizes(const PlanarDomain& domain) {
   return sizes;
 }
 
+DomainLoop polygon_loop(const std::vector<Vec3>& corners, int per_side) {
+  DomainLoop loop;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const Vec3 a = corners[i], b = corners[(i + 1) % corners.size()];
+    for (int k = 0; k < per_side; ++k) {
+      loop.points.push_back(a + (static_cast<double>(k) / per_side) * (b - a));
+      loop.vertex.push_back(k == 0);
+    }
+  }
+  return loop;
+}
+
 DomainLoop circle_hole(Vec3 centre, double radius, int n) {
   DomainLoop loop;
   for (int k = 0; k < n; ++k) {

@@ -24,6 +24,10 @@ GeneratedDomain generated_domain(int index);
 // Each loop's point count, as check_domain_mesh takes them.
 std::vector<int> loop_sizes(const PlanarDomain& domain);
 
+// A polygon through `corners` (in their order), each side in `per_side` equal
+// segments, the corners CAD vertices.
+DomainLoop polygon_loop(const std::vector<Vec3>& corners, int per_side);
+
 // A circle of n points around `centre`, clockwise (a hole), no CAD vertex.
 DomainLoop circle_hole(Vec3 centre, double radius, int n);
 

@@ -28,20 +28,9 @@ namespace {
 
 using testing::circle_hole;
 using testing::loop_sizes;
+using testing::polygon_loop;
 
 const Vec3 kUp{0, 0, 1};
-
-DomainLoop polygon_loop(const std::vector<Vec3>& corners, int per_side) {
-  DomainLoop loop;
-  for (std::size_t i = 0; i < corners.size(); ++i) {
-    const Vec3 a = corners[i], b = corners[(i + 1) % corners.size()];
-    for (int k = 0; k < per_side; ++k) {
-      loop.points.push_back(a + (static_cast<double>(k) / per_side) * (b - a));
-      loop.vertex.push_back(k == 0);
-    }
-  }
-  return loop;
-}
 
 void expect_valid(const PlanarDomain& d, const QuadMesh& mesh, const std::string& what) {
   ASSERT_EQ(check_domain_mesh(mesh, loop_sizes(d)), "") << what << " " << mesh.template_tree;

@@ -20,17 +20,7 @@
 namespace tquad {
 namespace {
 
-DomainLoop sampled(const std::vector<Vec3>& corners, int per_side) {
-  DomainLoop loop;
-  for (std::size_t i = 0; i < corners.size(); ++i) {
-    const Vec3 a = corners[i], b = corners[(i + 1) % corners.size()];
-    for (int k = 0; k < per_side; ++k) {
-      loop.points.push_back(a + (static_cast<double>(k) / per_side) * (b - a));
-      loop.vertex.push_back(k == 0);
-    }
-  }
-  return loop;
-}
+using testing::polygon_loop;
 
 struct TouchingDomain {
   PlanarDomain domain;
@@ -49,7 +39,7 @@ TouchingDomain touching_domain(int seed) {
   }
   const int per_side = 2 + static_cast<int>(rng() % 4);
   TouchingDomain out;
-  out.domain.loops.push_back(sampled(corners, per_side));
+  out.domain.loops.push_back(polygon_loop(corners, per_side));
   // The hole's apex is corner 0; its sides leave it inside the corner's wedge.
   const Vec3 apex = corners[0];
   const double out_angle = std::atan2(corners[1].y - apex.y, corners[1].x - apex.x);
@@ -62,7 +52,7 @@ TouchingDomain touching_domain(int seed) {
   const Vec3 p2{apex.x + length * std::cos(out_angle + f2 * wedge), apex.y + length * std::sin(out_angle + f2 * wedge), 0};
   int hole_per_side = 1 + static_cast<int>(rng() % 4);
   if ((sides * per_side + 3 * hole_per_side) % 2 != 0) ++hole_per_side;
-  out.domain.loops.push_back(sampled({apex, p2, p1}, hole_per_side));  // clockwise
+  out.domain.loops.push_back(polygon_loop({apex, p2, p1}, hole_per_side));  // clockwise
   const int n = static_cast<int>(out.domain.loops[0].points.size());
   const int m = static_cast<int>(out.domain.loops[1].points.size());
   for (int i = 0; i < n + m; ++i) out.ids.push_back(i);
@@ -110,7 +100,7 @@ INSTANTIATE_TEST_SUITE_P(GeneratedDomains, SplicedTouchingHole, ::testing::Range
 TEST(SpliceTouchingLoops, LoopsSharingNoPointAreLeftAsTheyAre) {
   const PlanarDomain d = [] {
     PlanarDomain d;
-    d.loops.push_back(sampled({{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}}, 2));
+    d.loops.push_back(polygon_loop({{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}}, 2));
     d.loops.push_back(testing::circle_hole({2, 2, 0}, 1, 6));
     return d;
   }();

@@ -202,6 +202,7 @@ class ShapeMeshContext {
       result_.kept_round = best->round;
       restore_round(std::move(*best));
     }
+    report_intervals();
     stage("assemble", [&] { assemble(); });
     if (options_.order == 2) stage("mid-edge nodes", [&] { add_middles(); });
     return std::move(result_);
@@ -288,14 +289,7 @@ class ShapeMeshContext {
     // No change goes below the curvature and three-edge-face bounds or a refinement.
     std::vector<int> floor = edge_floor_;
     for (int e = 0; e < index_.edge_count(); ++e) floor[e] = std::max(floor[e], minimum_[e]);
-    const IntervalReport intervals =
-        assign_shape_intervals(index_, to_mesh_, lengths_, result_.size, segments_, floor, wires_, &spacings_);
-    result_.changes = intervals.changes;
-    result_.interval_chains = intervals.chains;
-    result_.chained_edges = intervals.chained_edges;
-    result_.balanced_bands = intervals.balanced_bands;
-    result_.balanced_rings = intervals.balanced_rings;
-    result_.quartered_pole_rims = intervals.quartered_pole_rims;
+    intervals_ = assign_shape_intervals(index_, to_mesh_, lengths_, result_.size, segments_, floor, wires_, &spacings_);
     // Before anything is allocated: a face of E boundary segments has at least
     // E / 2 - 1 quads (nodes = 1 + quads + E / 2 - holes, and its E boundary nodes).
     long long at_least = 0;
@@ -335,7 +329,7 @@ class ShapeMeshContext {
     previous_nodes_ = std::move(result_.mesh.nodes);
     result_.mesh.nodes.clear();
     edges_ = discretize_edges(index_, segments_, result_.mesh.nodes, &spacings_);
-    result_.aligned_bands = align_narrow_bands(index_, meshed_, edges_, result_.mesh.nodes, &spacings_);
+    aligned_bands_ = align_narrow_bands(index_, meshed_, edges_, result_.mesh.nodes, &spacings_);
     if (first) check_requested_corners(index_, meshed_, options_.corners, edges_, result_.mesh.nodes);
   }
 
@@ -384,9 +378,8 @@ class ShapeMeshContext {
     std::vector<EdgeNodes> edges;
     std::vector<Vec3> nodes;
     std::vector<FaceOutcome> outcomes;
-    std::vector<IntervalChange> changes;
-    int interval_chains = 0, chained_edges = 0, balanced_bands = 0, balanced_rings = 0, quartered_pole_rims = 0,
-        aligned_bands = 0;
+    IntervalReport intervals;
+    int aligned_bands = 0;
   };
 
   int refused_faces() const {
@@ -396,9 +389,7 @@ class ShapeMeshContext {
   }
 
   RoundState save_round(int refused, int round) const {
-    return RoundState{refused, round, segments_, edges_, result_.mesh.nodes, outcomes_, result_.changes,
-                      result_.interval_chains, result_.chained_edges, result_.balanced_bands,
-                      result_.balanced_rings, result_.quartered_pole_rims, result_.aligned_bands};
+    return RoundState{refused, round, segments_, edges_, result_.mesh.nodes, outcomes_, intervals_, aligned_bands_};
   }
 
   void restore_round(RoundState&& kept) {
@@ -406,13 +397,19 @@ class ShapeMeshContext {
     edges_ = std::move(kept.edges);
     result_.mesh.nodes = std::move(kept.nodes);
     outcomes_ = std::move(kept.outcomes);
-    result_.changes = std::move(kept.changes);
-    result_.interval_chains = kept.interval_chains;
-    result_.chained_edges = kept.chained_edges;
-    result_.balanced_bands = kept.balanced_bands;
-    result_.balanced_rings = kept.balanced_rings;
-    result_.quartered_pole_rims = kept.quartered_pole_rims;
-    result_.aligned_bands = kept.aligned_bands;
+    intervals_ = std::move(kept.intervals);
+    aligned_bands_ = kept.aligned_bands;
+  }
+
+  // The kept round's interval assignment, for the report.
+  void report_intervals() {
+    result_.changes = intervals_.changes;
+    result_.interval_chains = intervals_.chains;
+    result_.chained_edges = intervals_.chained_edges;
+    result_.balanced_bands = intervals_.balanced_bands;
+    result_.balanced_rings = intervals_.balanced_rings;
+    result_.quartered_pole_rims = intervals_.quartered_pole_rims;
+    result_.aligned_bands = aligned_bands_;
   }
 
   bool refine_edges_of_inverted_faces() {
@@ -500,6 +497,8 @@ class ShapeMeshContext {
   std::vector<EdgeNodes> edges_;
   std::vector<EdgeNodes> previous_edges_;  // the last round's, while meshing the next
   EdgeSpacings spacings_;                  // each edge's last spacing, for the next rounds
+  IntervalReport intervals_;               // the round's interval assignment
+  int aligned_bands_ = 0;                  // the round's aligned bands (band_alignment.h)
   FaceWireEdges wires_{index_};            // each face's wires, walked once
   std::vector<Vec3> previous_nodes_;
   std::vector<FaceOutcome> outcomes_;
