@@ -21,8 +21,6 @@ namespace tquad {
 
 namespace {
 
-TopoDS_Edge forward_edge(const TopoDS_Edge& e) { return TopoDS::Edge(e.Oriented(TopAbs_FORWARD)); }
-
 // Loop positions from a to b going forward, as a count.
 int forward_count(int a, int b, int n) { return ((b - a) % n + n) % n; }
 
@@ -127,11 +125,11 @@ int align_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshed,
         const int m = count[follower_side];
         std::vector<Vec3> targets;
         for (int j = 1; j < m; ++j) targets.push_back(nodes[b.nodes[(corners[leader_side + 1 == 4 ? 0 : leader_side + 1] - j + n) % n]]);
-        const bool forward = edges[e].nodes.size() > 1 && b.nodes[(corners[follower_side] + 1) % n] == edges[e].nodes[1];
+        const bool along_edge = edges[e].nodes.size() > 1 && b.nodes[(corners[follower_side] + 1) % n] == edges[e].nodes[1];
         const auto params =
-            projected_parameters(forward_edge(index.edge(e)), edges[e], targets, forward, kNarrowEnd * along);
+            projected_parameters(forward(index.edge(e)), edges[e], targets, along_edge, kNarrowEnd * along);
         if (!params) continue;
-        const BRepAdaptor_Curve curve(forward_edge(index.edge(e)));
+        const BRepAdaptor_Curve curve(forward(index.edge(e)));
         EdgeNodes& en = edges[e];
         for (int i = 0; i + 1 < m; ++i) {
           en.params[i + 1] = (*params)[i];

@@ -20,9 +20,9 @@
 
 namespace tquad {
 
-namespace {
-
 TopoDS_Edge forward(const TopoDS_Edge& e) { return TopoDS::Edge(e.Oriented(TopAbs_FORWARD)); }
+
+namespace {
 
 // Total turning of the curve's tangent (radians), from 64 samples.
 double tangent_turn(const BRepAdaptor_Curve& curve) {

@@ -14,6 +14,9 @@
 
 namespace tquad {
 
+// The edge in its FORWARD orientation: the one its EdgeNodes run along.
+TopoDS_Edge forward(const TopoDS_Edge& e);
+
 struct EdgeNodes {
   bool degenerate = false;     // a collapsed edge (cone apex, sphere pole): one point
   double length = 0.0;
