@@ -378,7 +378,11 @@ FaceMeshResult mesh_face(const ShapeIndex& index, int face_index, const FaceBoun
       uv_problem = e.what();
     }
   }
-  if (!best || best->bad > 0) {
+  // On a plane the (u, v) chart is the plane's own Euclidean frame, so the 3D route
+  // would build the same template mesh again, up to a rigid motion, and repair it the
+  // same way: it is tried only where (u, v) failed outright.
+  const bool plane = BRepAdaptor_Surface(face).GetType() == GeomAbs_Plane;
+  if (!best || (best->bad > 0 && !plane)) {
     try {
       FaceMeshResult in_space = mesh_in_space(face, boundary, corners, nodes, options);
       if (!best || better_face_mesh(in_space, *best)) best = std::move(in_space);
