@@ -57,8 +57,7 @@ std::optional<std::vector<double>> projected_parameters(const TopoDS_Edge& edge,
   std::vector<double> params;
   for (int i = 0; i < n - 1; ++i) {
     const Vec3& target = targets[forward ? i : n - 2 - i];
-    GeomAPI_ProjectPointOnCurve projection(gp_Pnt(target.x, target.y, target.z), curve, std::min(first, last),
-                                           std::max(first, last));
+    GeomAPI_ProjectPointOnCurve projection(gp_Pnt(target.x, target.y, target.z), curve, first, last);
     if (projection.NbPoints() == 0 || !(projection.LowerDistance() <= widest)) return std::nullopt;
     params.push_back(projection.LowerDistanceParameter());
   }
@@ -79,12 +78,120 @@ std::optional<std::vector<double>> projected_parameters(const TopoDS_Edge& edge,
   return params;
 }
 
+// A thin ring's follower: `targets` (the leader rim's nodes in loop order) projected
+// onto the closed edge's curve. The target nearest the edge's vertex node (`vertex`,
+// which stays) is left out; the others, in cyclic order from it, must run one way
+// along the curve. Returns the follower's inner parameters in its forward order, or
+// nothing (a target further than `widest`, out of order, or a segment under
+// kShortestShare of the even one).
+std::optional<std::vector<double>> ring_parameters(const TopoDS_Edge& edge, const EdgeNodes& own,
+                                                   const std::vector<Vec3>& targets, const Vec3& vertex,
+                                                   double widest) {
+  double u0 = 0, u1 = 0;
+  const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, u0, u1);
+  if (curve.IsNull()) return std::nullopt;
+  const int m = static_cast<int>(targets.size());
+  if (static_cast<int>(own.params.size()) != m + 1 || m < 3) return std::nullopt;
+  const double first = own.params.front(), last = own.params.back();
+  if (!(last > first)) return std::nullopt;  // OpenCASCADE's edges run up their parameter
+  int nearest = 0;
+  for (int i = 1; i < m; ++i) {
+    if (distance(targets[i], vertex) < distance(targets[nearest], vertex)) nearest = i;
+  }
+  std::vector<double> params;
+  for (int j = 1; j < m; ++j) {
+    const Vec3& target = targets[(nearest + j) % m];
+    GeomAPI_ProjectPointOnCurve projection(gp_Pnt(target.x, target.y, target.z), curve, first, last);
+    if (projection.NbPoints() == 0 || !(projection.LowerDistance() <= widest)) return std::nullopt;
+    params.push_back(projection.LowerDistanceParameter());
+  }
+  // One way along the curve: the loops may run either way round each other.
+  const bool rising = params.back() > params.front();
+  if (!rising) std::reverse(params.begin(), params.end());
+  if (!std::is_sorted(params.begin(), params.end())) return std::nullopt;
+  const BRepAdaptor_Curve adaptor(edge);
+  double length = 0;
+  for (int i = 0; i < m; ++i) length += distance(to_vec3(adaptor.Value(own.params[i])), to_vec3(adaptor.Value(own.params[i + 1])));
+  const double even = length / m;
+  std::vector<double> all{first};
+  all.insert(all.end(), params.begin(), params.end());
+  all.push_back(last);
+  for (int i = 0; i < m; ++i) {
+    if (!(all[i + 1] > all[i])) return std::nullopt;
+    const double chord = distance(to_vec3(adaptor.Value(all[i])), to_vec3(adaptor.Value(all[i + 1])));
+    if (!(chord >= kShortestShare * even)) return std::nullopt;
+  }
+  return params;
+}
+
+// The length of a closed loop of nodes, by its chords.
+double loop_length(const std::vector<NodeId>& loop, const std::vector<Vec3>& nodes) {
+  double length = 0;
+  for (std::size_t i = 0; i < loop.size(); ++i) length += distance(nodes[loop[i]], nodes[loop[(i + 1) % loop.size()]]);
+  return length;
+}
+
+// Moves the follower edge e's inner nodes to `params` (and its kept spacing).
+void move_follower(const TopoDS_Edge& edge, const std::vector<double>& params, EdgeNodes& en,
+                   std::vector<Vec3>& nodes, EdgeSpacings* kept, int e) {
+  const BRepAdaptor_Curve curve(edge);
+  const int m = static_cast<int>(params.size()) + 1;
+  for (int i = 0; i + 1 < m; ++i) {
+    en.params[i + 1] = params[i];
+    nodes[en.nodes[i + 1]] = to_vec3(curve.Value(params[i]));
+  }
+  if (kept && e < static_cast<int>(kept->last.size()) && kept->last[e].segments == m) {
+    kept->last[e].params = en.params;
+    for (int i = 0; i + 1 < m; ++i) kept->last[e].inner_points[i] = nodes[en.nodes[i + 1]];
+  }
+}
+
 }  // namespace
 
 int align_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<EdgeNodes>& edges,
                        std::vector<Vec3>& nodes, EdgeSpacings* kept) {
   std::vector<char> frozen(index.edge_count(), 0);
   int aligned = 0;
+  // Thin rings: a face with one hole and equal loop totals (ring_balance.h), one of
+  // whose loops is a single closed edge (a circle around a hexagonal socket, a washer
+  // between two circles): that edge takes its nodes where the other loop's nodes
+  // project onto it, so that the mapped ring's quads (mapped_ring.h) cross the ring.
+  // Its vertex stays, facing the other loop's nearest node.
+  for (int f = 0; f < index.face_count(); ++f) {
+    if (!meshed[f]) continue;
+    FaceBoundary b;
+    try {
+      b = face_boundary(index, f, edges, nodes);
+    } catch (...) {
+      continue;  // the face's own meshing says what is wrong
+    }
+    if (b.inner_wires != 1 || b.holes.size() != 1 || b.has_degenerate_edge) continue;
+    // A seam cuts the ring open: the face is a band then, not a ring.
+    if (std::find(b.is_seam.begin(), b.is_seam.end(), 1) != b.is_seam.end()) continue;
+    const NodeLoop& hole = b.holes[0];
+    const int m = static_cast<int>(b.nodes.size());
+    if (m < 3 || static_cast<int>(hole.nodes.size()) != m) continue;
+    const double along = 0.5 * (loop_length(b.nodes, nodes) + loop_length(hole.nodes, nodes)) / m;
+    const std::vector<int> rims[2] = {b.edge_index, hole.edge_index};
+    const std::vector<NodeId>* loops[2] = {&b.nodes, &hole.nodes};
+    for (int side = 0; side < 2; ++side) {
+      if (rims[side].size() != 1) continue;
+      const int e = rims[side][0];
+      if (frozen[e] || edges[e].degenerate || index.edge(e).IsNull()) continue;
+      const std::vector<NodeId>& leader = *loops[1 - side];
+      std::vector<Vec3> targets;
+      for (NodeId id : leader) targets.push_back(nodes[id]);
+      const auto params =
+          ring_parameters(forward(index.edge(e)), edges[e], targets, nodes[edges[e].nodes.front()], kNarrowEnd * along);
+      if (!params) continue;
+      move_follower(forward(index.edge(e)), *params, edges[e], nodes, kept, e);
+      frozen[e] = 1;
+      for (int other : rims[1 - side]) frozen[other] = 1;
+      ++aligned;
+      break;
+    }
+  }
+  // Bands: a four-sided face one or two segments wide.
   for (int f = 0; f < index.face_count(); ++f) {
     if (!meshed[f]) continue;
     // Only a face with two or more edges of at most kNarrowBand segments can be a band.
@@ -129,16 +236,7 @@ int align_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshed,
         const auto params =
             projected_parameters(forward(index.edge(e)), edges[e], targets, along_edge, kNarrowEnd * along);
         if (!params) continue;
-        const BRepAdaptor_Curve curve(forward(index.edge(e)));
-        EdgeNodes& en = edges[e];
-        for (int i = 0; i + 1 < m; ++i) {
-          en.params[i + 1] = (*params)[i];
-          nodes[en.nodes[i + 1]] = to_vec3(curve.Value((*params)[i]));
-        }
-        if (kept && e < static_cast<int>(kept->last.size()) && kept->last[e].segments == m) {
-          kept->last[e].params = en.params;
-          for (int i = 0; i + 1 < m; ++i) kept->last[e].inner_points[i] = nodes[en.nodes[i + 1]];
-        }
+        move_follower(forward(index.edge(e)), *params, edges[e], nodes, kept, e);
         frozen[e] = 1;
         // The leader's edges stay as they are from now on.
         for (int p = 0; p < count[leader_side]; ++p) frozen[b.edge_index[wire_edge_at(b, (corners[leader_side] + p) % n)]] = 1;

@@ -13,6 +13,13 @@
 // never followers afterwards (an edge moves at most once, for one band); a projection
 // that is not in order along the follower, or leaves a segment under kShortestShare
 // of the even one, leaves the follower as it was.
+//
+// A thin ring (a face with one hole whose two loops have equal node counts,
+// ring_balance.h) is aligned the same way before any band: when one loop is a single
+// closed edge (a circle around a hexagonal socket, a washer between two circles),
+// its inner nodes move to where the other loop's nodes project onto it, so that the
+// mapped ring's quads (mapped_ring.h) run straight across the ring. Its vertex stays,
+// facing the other loop's nearest node; the other loop's edges are frozen.
 #pragma once
 
 #include <vector>
@@ -33,8 +40,8 @@ constexpr double kShortestShare = 0.05;
 constexpr double kNarrowEnd = 0.5;
 
 // Moves followers' inner nodes in `edges` and `nodes` (and their spacing in `kept`,
-// when given, so that the next round starts from it). Returns the number of bands
-// aligned.
+// when given, so that the next round starts from it). Returns the number of bands and
+// rings aligned.
 int align_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<EdgeNodes>& edges,
                        std::vector<Vec3>& nodes, EdgeSpacings* kept);
 

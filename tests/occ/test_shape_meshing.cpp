@@ -942,6 +942,45 @@ TEST(ShapeMeshing, ANarrowBandsLongSidesFaceEachOther) {
   }
 }
 
+// A plate face in z = 0: a circle of radius `radius` around a hexagonal hole of
+// circumradius `corner`, so that the ring between them is `radius - corner` wide at
+// the hexagon's corners and wider at its sides' middles.
+TopoDS_Face circle_around_a_hexagon(double radius, double corner) {
+  const gp_Circ circle(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), radius);
+  const TopoDS_Wire outer = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(circle).Edge()).Wire();
+  BRepBuilderAPI_MakePolygon hexagon;
+  for (int i = 0; i < 6; ++i) {
+    const double a = M_PI / 6 + i * M_PI / 3;
+    hexagon.Add(gp_Pnt(corner * std::cos(a), corner * std::sin(a), 0));
+  }
+  hexagon.Close();
+  BRepBuilderAPI_MakeFace face(gp_Pln(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), outer);
+  TopoDS_Wire hole = hexagon.Wire();
+  hole.Reverse();
+  face.Add(hole);
+  return face.Face();
+}
+
+TEST(ShapeMeshing, AThinRingsCircleFacesItsOtherLoopsNodes) {
+  // A ring 0.3 to 0.93 wide. At size 3 both loops get 11 segments (ring_balance.h),
+  // but the circle cut by its own arc length from its vertex puts its nodes up to
+  // half a segment along from the hexagon's: the mapped ring folds and the face is
+  // decomposed (worst 0.07). The circle, one closed edge, takes its nodes where the
+  // hexagon's project onto it (band_alignment.h): one mapped ring of 11 quads, each
+  // crossing the ring (worst sin 60 degrees, the hexagon's corner).
+  ShapeMeshOptions options;
+  options.size = 3.0;
+  const ShapeMeshResult result = mesh_shape(circle_around_a_hexagon(5.0, 4.7), options);
+  ASSERT_TRUE(result.mesh.refused_faces.empty());
+  ASSERT_EQ(result.mesh.faces.size(), 1u);
+  EXPECT_EQ(result.aligned_bands, 1);
+  EXPECT_EQ(result.mesh.faces[0].template_tree, "R1");
+  EXPECT_EQ(result.mesh.quads.size(), 11u);
+  double worst = 1;
+  for (double q : result.mesh.scaled_jacobian) worst = std::min(worst, q);
+  EXPECT_GT(worst, 0.85);
+}
+
 // One face of a shared part meshed whole at the default size (--keep-going): its
 // template tree begins with `tree` and its worst scaled Jacobian (printed) is over
 // `worst_above`. Skips when the parts are absent.
