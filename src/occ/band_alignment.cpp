@@ -248,4 +248,39 @@ int align_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshed,
   return aligned;
 }
 
+std::vector<char> alignable_ring_faces(FaceWireEdges& face_wires, const std::vector<char>& meshed,
+                                       const std::vector<double>& lengths, const std::vector<int>& segments) {
+  const ShapeIndex& index = face_wires.index();
+  std::vector<char> faces(index.face_count(), 0);
+  for (int f = 0; f < index.face_count(); ++f) {
+    if (!meshed[f]) continue;
+    const auto& wires = face_wires.of(f);
+    if (!wires || wires->size() != 2) continue;
+    const int single = (*wires)[0].size() == 1 ? 0 : (*wires)[1].size() == 1 ? 1 : -1;
+    if (single < 0) continue;
+    const int e = (*wires)[single][0];
+    const std::vector<int>& other = (*wires)[1 - single];
+    int total = segments[e], others = 0;
+    double length = lengths[e];
+    for (int o : other) {
+      others += segments[o];
+      length += lengths[o];
+    }
+    if (total != others || total < 3 || index.edge(e).IsNull()) continue;
+    double u0 = 0, u1 = 0;
+    const Handle(Geom_Curve) curve = BRep_Tool::Curve(forward(index.edge(e)), u0, u1);
+    if (curve.IsNull()) continue;
+    const double widest = kNarrowEnd * length / (2.0 * total);
+    bool near = true;
+    for (int o : other) {
+      for (TopExp_Explorer it(index.edge(o), TopAbs_VERTEX); it.More() && near; it.Next()) {
+        GeomAPI_ProjectPointOnCurve projection(BRep_Tool::Pnt(TopoDS::Vertex(it.Current())), curve, u0, u1);
+        near = projection.NbPoints() > 0 && projection.LowerDistance() <= widest;
+      }
+    }
+    faces[f] = near;
+  }
+  return faces;
+}
+
 }  // namespace tquad

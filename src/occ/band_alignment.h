@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "occ/edge_discretization.h"
+#include "occ/face_wire_edges.h"
 #include "occ/shape_index.h"
 
 namespace tquad {
@@ -44,5 +45,12 @@ constexpr double kNarrowEnd = 0.5;
 // rings aligned.
 int align_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<EdgeNodes>& edges,
                        std::vector<Vec3>& nodes, EdgeSpacings* kept);
+
+// Per face, 1 where the face is a ring that align_narrow_bands may align at these
+// counts: two loops of equal totals in `segments`, one a single edge, and every
+// vertex of the other within kNarrowEnd of a mean segment (from `lengths`) of that
+// edge's curve. Interval assignment keeps such rings balanced (interval_assignment.h).
+std::vector<char> alignable_ring_faces(FaceWireEdges& wires, const std::vector<char>& meshed,
+                                       const std::vector<double>& lengths, const std::vector<int>& segments);
 
 }  // namespace tquad

@@ -13,6 +13,7 @@
 #include "core/parity_pairing.h"
 #include "occ/band_balance.h"
 #include "occ/pole_rims.h"
+#include "occ/band_alignment.h"
 #include "occ/ring_balance.h"
 
 namespace tquad {
@@ -232,8 +233,25 @@ IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector
   std::vector<double> extents(edges, 1.0);
   for (int e = 0; e < edges; ++e) if (segments[e] > 0) extents[e] = lengths[e] / size;
   report.balanced_rings = balance_rings(wires, meshed, goals, extents, floors, segments, chains);
+  const std::vector<char> alignable = alignable_ring_faces(wires, meshed, lengths, segments);
   std::vector<std::pair<int, int>> band_sides;
   report.balanced_bands = balance_narrow_bands(index, meshed, segments, chains, kept, &band_sides);
+  // A band's balance may undo a ring's (a circle around a hexagonal socket, shared
+  // with a chamfer's band whose rims are then made equal). A ring that
+  // band_alignment.h can turn into a mapped ring crossing it is balanced again, each
+  // band's two long sides moving together so that the band stays balanced.
+  std::vector<char> undone = alignable;
+  const std::vector<char> still = alignable_ring_faces(wires, meshed, lengths, segments);
+  bool any = false;
+  for (std::size_t f = 0; f < undone.size(); ++f) {
+    undone[f] = undone[f] && !still[f];
+    any = any || undone[f];
+  }
+  if (any) {
+    std::vector<std::vector<int>> units = chains;
+    for (const auto& [a, b] : band_sides) units.push_back({a, b});
+    balance_rings(wires, undone, goals, extents, floors, segments, units);
+  }
   // Faces left odd are made even by changing whole chains (which keeps their faces
   // mapped), a band's two long sides together (likewise: TrimmedSurface.brep's band,
   // balanced to 26 and 26, had its longer side raised to 27 for parity, which its
