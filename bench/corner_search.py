@@ -9,7 +9,7 @@ this machine.
     /usr/bin/python3 bench/corner_search.py [--tquad build/bin/tquad]
         [--cad-dir ../shared/data/cad] [--divisor 25] [--markdown]
 
-Prints one line per input; with --markdown, a table for the README.
+Prints one line per input; with --markdown, a table for bench/MEASURED.md.
 """
 import argparse
 import json

@@ -9,7 +9,7 @@ and at the finer sizes asked for.
     /usr/bin/python3 bench/smoothing_cost.py [--tquad build/bin/tquad]
         [--cad-dir ../shared/data/cad] [--divisors 25 100] [--repeat 3] [--markdown]
 
-Prints one line per part and size; with --markdown, a table for the README.
+Prints one line per part and size; with --markdown, a table for bench/MEASURED.md.
 """
 import argparse
 import json

@@ -95,7 +95,7 @@ TEST(TemplateCatalogue, TooSmallRegionsAreRegroupedIntoFourCurves) {
 }
 
 TEST(TemplateCatalogue, T3OffsetCorrectionFollowsFigure4) {
-  // DESIGN.md: (10, 4, 4) gives interior lines 1, 3, 3 after the offset.
+  // docs/design.md, "Template catalogue": (10, 4, 4) gives interior lines 1, 3, 3 after the offset.
   const T3Split s = split_t3({10, 4, 4});
   EXPECT_EQ(s.lines, (std::array<int, 3>{1, 3, 3}));
   // Without offset the lines are eq. 6's: (4, 4, 4) -> 2, 2, 2.

@@ -2,7 +2,7 @@
 // patches of 3 and 4 curves that the templates mesh with any even count: the domain
 // decomposition the paper leaves to its user (abstract, section 1).
 //
-// Method (coarse triangulation and pairing; DESIGN.md, "face decomposition"):
+// Method (coarse triangulation and pairing; docs/design.md, "Face decomposition"):
 //  1. Coarse vertices on every loop: the CAD vertices where the boundary turns
 //     sharply (they must stay patch corners), then more points so that no piece of
 //     boundary between two coarse vertices turns by more than 60 degrees (a circle

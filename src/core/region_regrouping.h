@@ -1,6 +1,7 @@
-// regroup_curves: the fallback for regions below the templates' minimums (DESIGN.md,
-// reading notes). T3 cannot split a one-edge curve, and T5 cannot split a curve of
-// fewer than 4 edges without leaving a one-edge side. Such a region is meshed with
+// regroup_curves: the fallback for regions below the templates' minimums
+// (docs/design.md, "Regions below the templates' minimums"). T3 cannot split a
+// one-edge curve, and T5 cannot split a curve of fewer than 4 edges without leaving
+// a one-edge side. Such a region is meshed with
 // another number of curves, chosen from the counts alone:
 //   - three curves with a one-edge curve: merge it into a neighbour, giving two curves,
 //     when both are then >= 4 edges (the most balanced merge); otherwise split the

@@ -15,7 +15,8 @@
 //     T2  both pairs unequal (B > A, D > C, B and D adjacent):
 //         b = min(B - A, D - C); A x b and b x C strips along the short sides (T0)
 //         and the rest (B - b) x (D - b) x A x C, which is T0 or T1.
-//         (DESIGN.md: b is not halved here, or Table 1's rows fail.)
+//         (docs/design.md, "Template catalogue": b is not halved here, or Table 1's
+//         rows fail.)
 //   three curves (s0, s1, s2)
 //     T3  trimapping: a centre joined to one split node per curve. Interior lines get
 //         l0 = (n1 + n2 - n0) / 2 edges (to the split of s0), and so on (eq. 6);

@@ -2,11 +2,11 @@
 // its template's canonical form (see template_catalogue.h), adds the interior points
 // and cuts, and returns the subregions in the order subregion_counts lists them.
 //
-// Where interior points go decides whether elements are valid (DESIGN.md). Interior
-// points are placed with the region's own transfinite map (eq. 1 or 2) at parameters
-// computed from 3D lengths (eqs. 3 and 4); cuts follow the map along straight lines
-// of the parameter domain, so they bend with a curved region instead of cutting its
-// chords.
+// Where interior points go decides whether elements are valid (docs/design.md,
+// "Placing interior points"). Interior points are placed with the region's own
+// transfinite map (eq. 1 or 2) at parameters computed from 3D lengths (eqs. 3 and
+// 4); cuts follow the map along straight lines of the parameter domain, so they bend
+// with a curved region instead of cutting its chords.
 #pragma once
 
 #include <vector>

@@ -1,6 +1,6 @@
-// read_boundary_json: the `.json` boundary input of the CLI (DESIGN.md, public
-// contracts): {"points": [[x, y, z], ...], "corners": [i, ...]}. A point may also be
-// [x, y] (z = 0). Other keys are ignored.
+// read_boundary_json: the `.json` boundary input of the CLI (docs/design.md,
+// "Public contracts"): {"points": [[x, y, z], ...], "corners": [i, ...]}. A point
+// may also be [x, y] (z = 0). Other keys are ignored.
 #pragma once
 
 #include <string>

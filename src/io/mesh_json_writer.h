@@ -1,4 +1,4 @@
-// The `.json` mesh file of DESIGN.md (public contracts):
+// The `.json` mesh file of docs/design.md, "Public contracts":
 //   {"nodes": [[x, y, z], ...], "quads": [[i, j, k, l], ...],
 //    "faces": [{"face": k, "template_tree": "...", "quads": [first, count]}, ...]}
 // with one "faces" entry per face record of the ShapeMesh, in record order.

@@ -526,8 +526,8 @@ TEST_F(ShapeCli, MalformedCornersAreRefused) {
                  {"face 0", "twice"});
 }
 
-// Not yet: corners for a face the shape does not have are ignored (exit 0), which
-// DESIGN.md's "never silent" rules out. Enable when the CLI checks the face index.
+// Corners for a face the shape does not have are refused (exit 2), never ignored
+// (docs/design.md, "Never silent").
 TEST_F(ShapeCli, CornersForAMissingFaceAreRefused) {
   expect_refused(shape_file("plate_with_hole.brep"), {"--corners", "99:0,1"}, {"face 99"});
 }

@@ -5,7 +5,8 @@ Every case names what it checks and the parts its one-line message must hold. Th
 command line must exit with the case's status (2 for bad input) and leave no output
 and no temporary file behind; the Python module must raise ValueError with the same
 parts, and the interpreter must live on. test_bad_input_matrix.py runs the matrix;
-run as a program it prints the README's table from a fresh run:
+run as a program it prints the table of docs/cli.md ("Bad-input matrix") from a
+fresh run:
 
     /usr/bin/python3 tests/python/bad_input_matrix.py build/bin/tquad
 
@@ -43,7 +44,7 @@ class Prepared:
 
 @dataclass
 class Case:
-    name: str                                   # the README's words
+    name: str                                   # the words of docs/cli.md's table
     prepare: Optional[Callable[[Path], Prepared]]  # None: a Python-only case
     expect: Sequence[str]                       # parts of the message
     python: Optional[Callable[[object, Prepared], object]] = None  # same input via tquad
@@ -150,7 +151,7 @@ def _read_only_output(folder: Path) -> str:
 
 
 def cases() -> List[Case]:
-    """The matrix, in the README's order."""
+    """The matrix, in the order of docs/cli.md's table."""
     step = (SHAPES / "plate_with_hole.step").read_text()
     return [
         # Boundary files.
@@ -318,7 +319,7 @@ def run_python(tquad, case: Case, folder: Path) -> Tuple[Optional[str], object]:
 
 
 def _shortened(message: str, folder: str) -> str:
-    """The message as the README shows it: no prefix, no machine's folders."""
+    """The message as docs/cli.md shows it: no prefix, no machine's folders."""
     message = message.replace("tquad: error: ", "", 1).replace(str(SHAPES) + "/", "")
     return message.replace(folder + "/", "").replace(folder, "FOLDER").replace("|", "\\|")
 

@@ -156,7 +156,7 @@ def to_femmesh(mesh):
     The mesh goes through a temporary legacy VTK file that FemMesh.read takes in one
     C++ call (femmesh_from_vtk_file); where that FreeCAD cannot read it (built
     without VTK) or reads something else, node by node (femmesh_node_by_node).
-    Measured by bench/freecad_transfer.py: see the README.
+    Measured by bench/freecad_transfer.py: see docs/freecad.md.
     """
     femmesh = femmesh_from_vtk_file(mesh)
     return femmesh if femmesh is not None else femmesh_node_by_node(mesh)
