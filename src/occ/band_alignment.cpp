@@ -43,6 +43,28 @@ double side_length(const FaceBoundary& b, const std::vector<Vec3>& nodes, int fr
   return length;
 }
 
+// Whether `params` (new inner parameters of an edge now at `own`) keep the edge's
+// nodes in order along it (its parameter's direction) with no segment under
+// kShortestShare of the even one.
+bool spaced_in_order(const TopoDS_Edge& edge, const EdgeNodes& own, const std::vector<double>& params) {
+  const int n = static_cast<int>(own.params.size()) - 1;
+  const double first = own.params.front(), last = own.params.back();
+  const BRepAdaptor_Curve adaptor(edge);
+  double length = 0;
+  for (int i = 0; i < n; ++i) length += distance(to_vec3(adaptor.Value(own.params[i])), to_vec3(adaptor.Value(own.params[i + 1])));
+  const double even = length / n;
+  std::vector<double> all{first};
+  all.insert(all.end(), params.begin(), params.end());
+  all.push_back(last);
+  const double direction = last > first ? 1.0 : -1.0;
+  for (int i = 0; i < n; ++i) {
+    if (!((all[i + 1] - all[i]) * direction > 0)) return false;
+    const double chord = distance(to_vec3(adaptor.Value(all[i])), to_vec3(adaptor.Value(all[i + 1])));
+    if (!(chord >= kShortestShare * even)) return false;
+  }
+  return true;
+}
+
 // The follower's new inner parameters, in the edge's forward order, or nothing (a
 // target further than `widest` from the curve: the band is not narrow there).
 std::optional<std::vector<double>> projected_parameters(const TopoDS_Edge& edge, const EdgeNodes& own,
@@ -61,20 +83,7 @@ std::optional<std::vector<double>> projected_parameters(const TopoDS_Edge& edge,
     if (projection.NbPoints() == 0 || !(projection.LowerDistance() <= widest)) return std::nullopt;
     params.push_back(projection.LowerDistanceParameter());
   }
-  // In order along the edge, no segment under kShortestShare of the even one.
-  const BRepAdaptor_Curve adaptor(edge);
-  double length = 0;
-  for (int i = 0; i < n; ++i) length += distance(to_vec3(adaptor.Value(own.params[i])), to_vec3(adaptor.Value(own.params[i + 1])));
-  const double even = length / n;
-  std::vector<double> all{first};
-  all.insert(all.end(), params.begin(), params.end());
-  all.push_back(last);
-  const double direction = last > first ? 1.0 : -1.0;
-  for (int i = 0; i < n; ++i) {
-    if (!((all[i + 1] - all[i]) * direction > 0)) return std::nullopt;
-    const double chord = distance(to_vec3(adaptor.Value(all[i])), to_vec3(adaptor.Value(all[i + 1])));
-    if (!(chord >= kShortestShare * even)) return std::nullopt;
-  }
+  if (!spaced_in_order(edge, own, params)) return std::nullopt;
   return params;
 }
 
@@ -108,19 +117,7 @@ std::optional<std::vector<double>> ring_parameters(const TopoDS_Edge& edge, cons
   // One way along the curve: the loops may run either way round each other.
   const bool rising = params.back() > params.front();
   if (!rising) std::reverse(params.begin(), params.end());
-  if (!std::is_sorted(params.begin(), params.end())) return std::nullopt;
-  const BRepAdaptor_Curve adaptor(edge);
-  double length = 0;
-  for (int i = 0; i < m; ++i) length += distance(to_vec3(adaptor.Value(own.params[i])), to_vec3(adaptor.Value(own.params[i + 1])));
-  const double even = length / m;
-  std::vector<double> all{first};
-  all.insert(all.end(), params.begin(), params.end());
-  all.push_back(last);
-  for (int i = 0; i < m; ++i) {
-    if (!(all[i + 1] > all[i])) return std::nullopt;
-    const double chord = distance(to_vec3(adaptor.Value(all[i])), to_vec3(adaptor.Value(all[i + 1])));
-    if (!(chord >= kShortestShare * even)) return std::nullopt;
-  }
+  if (!spaced_in_order(edge, own, params)) return std::nullopt;
   return params;
 }
 
