@@ -24,8 +24,9 @@ Shape.BoundBox differs from it (no tolerance gap; a .brep's stored triangulation
 report gives the largest difference met), and the manifest's diagonal is FreeCAD's, so
 neither is used unless tquad reads no shape. The same H goes to tquad and to Gmsh.
 
-Per part, in its own worker process (`--jobs` of them at once; each tquad uses its default
-threads, Gmsh one), for each divisor:
+Per part, in its own worker process (`--jobs` of them at once), for each divisor (Gmsh
+runs one thread; tquad runs `--tquad-threads`, by default one when more than one worker
+runs, so that each process has a core, and its own default of all cores with one worker):
   * `tquad mesh PART -o OUT.json --report json --size H --keep-going`, timed as the wall time
     of the whole process, killed with its process group after `--timeout` seconds. Recorded:
     exit status (0 meshed; 2 refused whole, with stderr's error line; anything else a crash),
@@ -602,12 +603,14 @@ def first_error_line(stderr):
     return lines[0] if lines else ""
 
 
-def run_tquad(tquad, path, size, timeout, mesh_path):
+def run_tquad(tquad, path, size, timeout, mesh_path, threads=0):
     """One tquad run on a part. Returns {status: ok | refused | crashed | timeout, returncode,
     process_s, ...}: for ok the report's counts, for the others stderr's error line."""
     if os.path.exists(mesh_path):
         os.remove(mesh_path)
     cmd = [tquad, "mesh", path, "-o", mesh_path, "--report", "json", "--keep-going"]
+    if threads:
+        cmd += ["--threads", str(threads)]
     if size:
         cmd += ["--size", repr(size)]
     code, out, err, elapsed = run_process(cmd, timeout)
@@ -692,9 +695,10 @@ def part_job(spec):
     if TQUAD_DEFAULT_DIVISOR in divisors:
         divisors.remove(TQUAD_DEFAULT_DIVISOR)
         divisors.insert(0, TQUAD_DEFAULT_DIVISOR)
-        default_run = run_tquad(spec["tquad"], spec["path"], None, spec["timeout"], mesh_path(TQUAD_DEFAULT_DIVISOR))
+        default_run = run_tquad(spec["tquad"], spec["path"], None, spec["timeout"], mesh_path(TQUAD_DEFAULT_DIVISOR),
+                                spec["threads"])
     else:
-        default_run = run_tquad(spec["tquad"], spec["path"], None, spec["timeout"], mesh_path(0))
+        default_run = run_tquad(spec["tquad"], spec["path"], None, spec["timeout"], mesh_path(0), spec["threads"])
         part["probe"] = {k: default_run.get(k) for k in ("status", "process_s", "edge_size", "error")}
         if os.path.exists(mesh_path(0)):
             os.remove(mesh_path(0))
@@ -711,7 +715,8 @@ def part_job(spec):
         if divisor == TQUAD_DEFAULT_DIVISOR:
             run["tquad"] = tq = default_run   # tquad's own default size, which is D / 25
         else:
-            run["tquad"] = tq = run_tquad(spec["tquad"], spec["path"], size, spec["timeout"], mesh_path(divisor))
+            run["tquad"] = tq = run_tquad(spec["tquad"], spec["path"], size, spec["timeout"], mesh_path(divisor),
+                                               spec["threads"])
         if tq["status"] == "ok":
             check = spec["surface_check"] is None or divisor in spec["surface_check"]
             try:
@@ -730,6 +735,14 @@ def part_job(spec):
 
 
 # ---------------------------------------------------------------- driving the workers
+
+def tquad_threads(args):
+    """tquad's --threads: as asked, else 1 when several workers share the cores (each
+    process then has one, as Gmsh's single thread has), else 0 (tquad's default)."""
+    if args.tquad_threads is not None:
+        return max(0, args.tquad_threads)
+    return 1 if args.jobs > 1 else 0
+
 
 def run_worker(part, settings, args):
     """Runs part_job for one part in a child process (this script with --part-job) and
@@ -1115,9 +1128,10 @@ def markdown(results, args, info, total_s, command):
         "    " + command,
         "",
         "Date %s. Machine: %s, %s cores (nproc), %s RAM, %s. tquad: %s. Gmsh %s. Total run time %.0f s, "
-        "%d parts through %d worker(s) at once."
+        "%d parts through %d worker(s) at once; tquad with %s, Gmsh with one thread."
         % (info["date"], info["cpu"], info["nproc"], info["ram"], info["uname"], info["tquad"],
-           info.get("gmsh", "?"), total_s, len(results), args.jobs),
+           info.get("gmsh", "?"), total_s, len(results), args.jobs,
+           "--threads %d" % tquad_threads(args) if tquad_threads(args) else "its default threads (all cores)"),
         "",
         "## Summary",
         "",
@@ -1239,6 +1253,9 @@ def parse_args(argv):
                         help="seconds allowed to each tquad and Gmsh process (default 300)")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1,
                         help="parts run at once (default: the number of CPUs)")
+    parser.add_argument("--tquad-threads", type=int, default=None,
+                        help="tquad's --threads (default: 1 when --jobs is over 1, as Gmsh runs one "
+                             "thread; otherwise tquad's own default, all cores)")
     parser.add_argument("--out-dir", default=os.path.join(REPO, "build", "corpus"),
                         help="unpacked parts, meshes and per-part results (default build/corpus)")
     parser.add_argument("--keep-meshes", action="store_true", help="keep tquad's mesh JSON files")
@@ -1293,7 +1310,8 @@ def main(argv=None):
     settings = {"tquad": os.path.abspath(args.tquad), "divisors": args.divisors, "gmsh_divisors": gmsh_divisors,
                 "gmsh_routes": args.gmsh_routes if gmsh_divisors else [], "timeout": args.timeout,
                 "surface_check": args.surface_check, "mesh_dir": mesh_dir, "result_dir": result_dir,
-                "keep_meshes": args.keep_meshes, "singular_sine": args.singular_sine}
+                "keep_meshes": args.keep_meshes, "singular_sine": args.singular_sine,
+                "threads": tquad_threads(args)}
 
     start = time.perf_counter()
     stamp = engine_stamp(args.tquad)
