@@ -2,11 +2,14 @@
 // one edge per side, within the paper's depth bound, whatever the counts.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <functional>
+#include <optional>
 #include <numeric>
 
 #include "core/input_error.h"
 #include "core/region_regrouping.h"
+#include "core/template_catalogue.h"
 #include "core/template_plan.h"
 
 namespace tquad {
@@ -39,6 +42,59 @@ void expect_plan_sound(const CurveCounts& counts, const TemplateOptions& options
   expect_sound(plan.root, quads, where);
   EXPECT_EQ(quads, plan.quad_count) << where;
   EXPECT_LE(plan.depth, 3) << where << " tree " << template_tree_string(plan.root);
+}
+
+TEST(TemplateCatalogue, TheTableHasOneRowPerTemplate) {
+  std::vector<int> rows(6, 0);
+  for (const TemplateRow& row : template_table()) {
+    ++rows[static_cast<int>(row.kind)];
+    EXPECT_EQ(template_row(row.kind).kind, row.kind);
+    EXPECT_NE(row.applies, nullptr);
+    EXPECT_NE(row.children, nullptr);
+    EXPECT_NE(row.realize, nullptr);
+  }
+  for (int kind = 0; kind < 6; ++kind) EXPECT_EQ(rows[kind], 1) << "T" << kind;
+}
+
+TEST(TemplateCatalogue, ExactlyOneFourCurveRowAppliesToAnyCounts) {
+  // T0, T1 and T2 split the four-curve counts between them (no order needed); each
+  // rotation brings the counts to its template's canonical form.
+  const TemplateOptions options;
+  for (int a = 1; a <= 8; ++a) for (int b = 1; b <= 8; ++b) for (int c = 1; c <= 8; ++c) for (int d = 1; d <= 8; ++d) {
+    const CurveCounts n{a, b, c, d};
+    int applying = 0;
+    for (const TemplateRow& row : template_table()) {
+      if (row.curves != 4) continue;
+      const std::optional<int> rotation = row.applies(n, options);
+      if (!rotation) continue;
+      ++applying;
+      const CurveCounts k = rotate_curves(n, *rotation);
+      if (row.kind == TemplateKind::T1) EXPECT_TRUE(k[1] == k[3] && k[0] > k[2]);
+      if (row.kind == TemplateKind::T2) EXPECT_TRUE(k[0] > k[2] && k[1] > k[3]);
+    }
+    EXPECT_EQ(applying, 1) << a << "," << b << "," << c << "," << d;
+  }
+}
+
+TEST(TemplateCatalogue, TheThreeCurveRowsFallBackToT3) {
+  // T4 is tried first and T3 takes every three-curve region T4 leaves, so a region
+  // within the minimums always has a template; in T4's canonical form s2 is the short
+  // curve.
+  TemplateOptions options;
+  for (int k = 2; k <= 4; ++k) {
+    options.t4_ratio = k;
+    for (int a = 2; a <= 20; ++a) for (int b = 2; b <= 20; ++b) for (int c = 2; c <= 20; ++c) {
+      const CurveCounts n{a, b, c};
+      const TemplateChoice choice = select_template(n, options);
+      const CurveCounts canonical = rotate_curves(n, choice.rotation);
+      if (choice.kind == TemplateKind::T4) {
+        EXPECT_LE(k * canonical[2], std::min(canonical[0], canonical[1]));
+      } else {
+        EXPECT_EQ(choice.kind, TemplateKind::T3);
+        EXPECT_FALSE(template_row(TemplateKind::T4).applies(n, options));
+      }
+    }
+  }
 }
 
 TEST(TemplateCatalogue, EveryFourCurveCountUpTo24Decomposes) {

@@ -6,7 +6,6 @@
 #include <string>
 
 #include "core/input_error.h"
-#include "core/mapped_grid.h"
 #include "core/planar_self_intersection.h"
 #include "core/region_regrouping.h"
 #include "core/template_plan.h"
@@ -47,15 +46,7 @@ void realize(const Region& region, const PlanNode& plan, MeshBuilder& builder,
                            counts_text(canonical.counts()) + ", planned " +
                            counts_text(plan.canonical_counts));
   }
-  std::vector<Region> children;
-  switch (plan.choice.kind) {
-    case TemplateKind::T0: mesh_mapped_grid(canonical, builder); return;
-    case TemplateKind::T1: children = split_t1(canonical, builder); break;
-    case TemplateKind::T2: children = split_t2(canonical, builder); break;
-    case TemplateKind::T3: children = split_t3(canonical, builder); break;
-    case TemplateKind::T4: children = split_t4(canonical, builder); break;
-    case TemplateKind::T5: children = split_t5(canonical, builder, options); break;
-  }
+  const std::vector<Region> children = template_row(plan.choice.kind).realize(canonical, builder, options);
   for (std::size_t i = 0; i < children.size(); ++i) {
     realize(children[i], plan.children[i], builder, options);
   }

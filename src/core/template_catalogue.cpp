@@ -4,6 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/mapped_grid.h"
+#include "core/template_realization.h"
+
 namespace tquad {
 
 std::string template_name(TemplateKind kind) {
@@ -18,18 +21,26 @@ namespace {
   throw std::logic_error("no template for counts (" + text + "); regroup the region first");
 }
 
-TemplateChoice select_four_curves(const CurveCounts& n) {
-  const bool pair02 = n[0] == n[2];
-  const bool pair13 = n[1] == n[3];
-  if (pair02 && pair13) return {TemplateKind::T0, 0};
-  if (pair13) return {TemplateKind::T1, n[0] > n[2] ? 0 : 2};
-  if (pair02) return {TemplateKind::T1, n[1] > n[3] ? 1 : 3};
-  // T2: the long side of each pair; they are adjacent, and the one first in loop
-  // order becomes s0 so that s1 is the other.
+// Four curves: T0 with both opposite pairs equal, T1 with one, T2 with none.
+std::optional<int> t0_applies(const CurveCounts& n, const TemplateOptions&) {
+  if (n[0] == n[2] && n[1] == n[3]) return 0;
+  return std::nullopt;
+}
+
+std::optional<int> t1_applies(const CurveCounts& n, const TemplateOptions&) {
+  const bool pair02 = n[0] == n[2], pair13 = n[1] == n[3];
+  if (pair02 == pair13) return std::nullopt;
+  if (pair13) return n[0] > n[2] ? 0 : 2;  // canonical s0 is the long side
+  return n[1] > n[3] ? 1 : 3;
+}
+
+std::optional<int> t2_applies(const CurveCounts& n, const TemplateOptions&) {
+  if (n[0] == n[2] || n[1] == n[3]) return std::nullopt;
+  // The long side of each pair; they are adjacent, and the one first in loop order
+  // becomes s0 so that s1 is the other.
   const int long02 = n[0] > n[2] ? 0 : 2;
   const int long13 = n[1] > n[3] ? 1 : 3;
-  const int rotation = (long02 + 1) % 4 == long13 ? long02 : long13;
-  return {TemplateKind::T2, rotation};
+  return (long02 + 1) % 4 == long13 ? long02 : long13;
 }
 
 // Trimapping lines before the offset correction (eq. 6): the line to curve i's
@@ -38,38 +49,41 @@ std::array<int, 3> trimap_lines(const CurveCounts& n) {
   return {(n[1] + n[2] - n[0]) / 2, (n[2] + n[0] - n[1]) / 2, (n[0] + n[1] - n[2]) / 2};
 }
 
-TemplateChoice select_three_curves(const CurveCounts& n, const TemplateOptions& options) {
+// Three curves: T4 when one curve is much shorter (k C <= A and k C <= B), else T3.
+std::optional<int> t4_applies(const CurveCounts& n, const TemplateOptions& options) {
   const int shortest = static_cast<int>(std::min_element(n.begin(), n.end()) - n.begin());
   const int c = n[shortest];
   const int a = n[(shortest + 1) % 3];
   const int b = n[(shortest + 2) % 3];
   const long long kc = static_cast<long long>(options.t4_ratio) * c;  // k and C are each under 2^31
-  if (kc <= a && kc <= b) {
-    return {TemplateKind::T4, (shortest + 1) % 3};  // canonical s2 is the short curve
-  }
+  if (kc <= a && kc <= b) return (shortest + 1) % 3;                // canonical s2 is the short curve
+  return std::nullopt;
+}
+
+std::optional<int> t3_applies(const CurveCounts& n, const TemplateOptions&) {
   const auto lines = trimap_lines(n);
   for (int i = 0; i < 3; ++i) {
-    if (lines[i] <= 0) return {TemplateKind::T3, i};  // s0 takes the offset excess
+    if (lines[i] <= 0) return i;  // s0 takes the offset excess
   }
-  return {TemplateKind::T3, 0};
+  return 0;
 }
+
+std::optional<int> t5_applies(const CurveCounts&, const TemplateOptions&) { return 0; }
 
 }  // namespace
 
 TemplateChoice select_template(const CurveCounts& counts, const TemplateOptions& options) {
-  switch (counts.size()) {
-    case 4:
-      for (int c : counts) if (c < 1) below_minimum(counts);
-      return select_four_curves(counts);
-    case 3:
-      for (int c : counts) if (c < 2) below_minimum(counts);
-      return select_three_curves(counts, options);
-    case 2:
-      if (counts[0] < 4 || counts[1] < 4) below_minimum(counts);
-      return {TemplateKind::T5, 0};
-    default:
-      below_minimum(counts);
+  const int curves = static_cast<int>(counts.size());
+  bool known = false;
+  for (const TemplateRow& row : template_table()) {
+    if (row.curves != curves) continue;
+    if (!known) {
+      for (int c : counts) if (c < row.fewest_edges) below_minimum(counts);
+      known = true;
+    }
+    if (const std::optional<int> rotation = row.applies(counts, options)) return {row.kind, *rotation};
   }
+  below_minimum(counts);
 }
 
 T1Split split_t1(const CurveCounts& n) { return {(n[0] - n[2]) / 2}; }
@@ -119,37 +133,81 @@ T5Split split_t5(const CurveCounts& n, double cut_hint) {
   return {a, b, c};
 }
 
-std::vector<CurveCounts> subregion_counts(TemplateKind kind, const CurveCounts& n,
-                                          const TemplateOptions& options) {
-  switch (kind) {
-    case TemplateKind::T0:
-      return {};
-    case TemplateKind::T1: {
-      const int b = split_t1(n).b, A = n[2], C = n[1];
-      return {{A, b, A, b}, {b, C, b, C}, {A, C, A, C}, {b, C, b, C}};
-    }
-    case TemplateKind::T2: {
-      const int b = split_t2(n).b, A = n[2], C = n[3];
-      return {{A, b, A, b}, {b, C, b, C}, {n[0] - b, n[1] - b, A, C}};
-    }
-    case TemplateKind::T3: {
-      const T3Split s = split_t3(n);
-      const auto& l = s.lines;
-      const auto& p = s.first_part;
-      return {{n[2] - p[2], p[0], l[0], l[2]},
-              {n[0] - p[0], p[1], l[1], l[0]},
-              {n[1] - p[1], p[2], l[2], l[1]}};
-    }
-    case TemplateKind::T4: {
-      const T4Split s = split_t4(n);
-      return {{s.a, s.b, s.c}, {n[0] - s.a, s.c, n[1] - s.b, n[2]}};
-    }
-    case TemplateKind::T5: {
-      const T5Split s = split_t5(n, options.t5_cut_hint);
-      return {{s.a, s.c, n[1] - s.b}, {n[0] - s.a, s.b, s.c}};
-    }
-  }
+namespace {
+
+// The count rules (subregion counts in realization order), per template.
+std::vector<CurveCounts> t0_children(const CurveCounts&, const TemplateOptions&) { return {}; }
+
+std::vector<CurveCounts> t1_children(const CurveCounts& n, const TemplateOptions&) {
+  const int b = split_t1(n).b, A = n[2], C = n[1];
+  return {{A, b, A, b}, {b, C, b, C}, {A, C, A, C}, {b, C, b, C}};
+}
+
+std::vector<CurveCounts> t2_children(const CurveCounts& n, const TemplateOptions&) {
+  const int b = split_t2(n).b, A = n[2], C = n[3];
+  return {{A, b, A, b}, {b, C, b, C}, {n[0] - b, n[1] - b, A, C}};
+}
+
+std::vector<CurveCounts> t3_children(const CurveCounts& n, const TemplateOptions&) {
+  const T3Split s = split_t3(n);
+  const auto& l = s.lines;
+  const auto& p = s.first_part;
+  return {{n[2] - p[2], p[0], l[0], l[2]}, {n[0] - p[0], p[1], l[1], l[0]}, {n[1] - p[1], p[2], l[2], l[1]}};
+}
+
+std::vector<CurveCounts> t4_children(const CurveCounts& n, const TemplateOptions&) {
+  const T4Split s = split_t4(n);
+  return {{s.a, s.b, s.c}, {n[0] - s.a, s.c, n[1] - s.b, n[2]}};
+}
+
+std::vector<CurveCounts> t5_children(const CurveCounts& n, const TemplateOptions& options) {
+  const T5Split s = split_t5(n, options.t5_cut_hint);
+  return {{s.a, s.c, n[1] - s.b}, {n[0] - s.a, s.b, s.c}};
+}
+
+// The realizations (template_realization.h), per template.
+std::vector<Region> t0_realize(const Region& canonical, MeshBuilder& builder, const TemplateOptions&) {
+  mesh_mapped_grid(canonical, builder);
   return {};
+}
+std::vector<Region> t1_realize(const Region& canonical, MeshBuilder& builder, const TemplateOptions&) {
+  return split_t1(canonical, builder);
+}
+std::vector<Region> t2_realize(const Region& canonical, MeshBuilder& builder, const TemplateOptions&) {
+  return split_t2(canonical, builder);
+}
+std::vector<Region> t3_realize(const Region& canonical, MeshBuilder& builder, const TemplateOptions&) {
+  return split_t3(canonical, builder);
+}
+std::vector<Region> t4_realize(const Region& canonical, MeshBuilder& builder, const TemplateOptions&) {
+  return split_t4(canonical, builder);
+}
+std::vector<Region> t5_realize(const Region& canonical, MeshBuilder& builder, const TemplateOptions& options) {
+  return split_t5(canonical, builder, options);
+}
+
+}  // namespace
+
+const std::vector<TemplateRow>& template_table() {
+  //                                         kind            curves fewest applies     children     realize
+  static const std::vector<TemplateRow> table{{TemplateKind::T0, 4, 1, t0_applies, t0_children, t0_realize},
+                                              {TemplateKind::T1, 4, 1, t1_applies, t1_children, t1_realize},
+                                              {TemplateKind::T2, 4, 1, t2_applies, t2_children, t2_realize},
+                                              {TemplateKind::T4, 3, 2, t4_applies, t4_children, t4_realize},
+                                              {TemplateKind::T3, 3, 2, t3_applies, t3_children, t3_realize},
+                                              {TemplateKind::T5, 2, 4, t5_applies, t5_children, t5_realize}};
+  return table;
+}
+
+const TemplateRow& template_row(TemplateKind kind) {
+  for (const TemplateRow& row : template_table()) {
+    if (row.kind == kind) return row;
+  }
+  throw std::logic_error("no template row for " + template_name(kind));
+}
+
+std::vector<CurveCounts> subregion_counts(TemplateKind kind, const CurveCounts& n, const TemplateOptions& options) {
+  return template_row(kind).children(n, options);
 }
 
 }  // namespace tquad

@@ -33,9 +33,16 @@
 // Regions below the templates' minimums (a three-curve region with a one-edge curve,
 // a two-curve region with a curve under 4 edges) are regrouped into another number of
 // curves before a template is chosen (region_regrouping.h).
+//
+// Each template is one row of template_table(): the curves it meshes, their fewest
+// edges, when it applies (and the rotation to its canonical form), its count rule
+// and its realization (template_realization.h). select_template takes the first row
+// in table order that applies; the planner (template_plan.h) and the mesher
+// (mesher.h) follow the rows' count rules and realizations.
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -103,6 +110,29 @@ T5Split split_t5(const CurveCounts& canonical, double cut_hint);
 // Children counts of a template applied to canonical counts, in realization order.
 std::vector<CurveCounts> subregion_counts(TemplateKind kind, const CurveCounts& canonical,
                                           const TemplateOptions& options);
+
+struct Region;
+class MeshBuilder;
+
+// One template of the catalogue.
+struct TemplateRow {
+  TemplateKind kind;
+  int curves;        // of the regions it meshes: 2, 3 or 4
+  int fewest_edges;  // per curve, for every template of that many curves
+  // Whether it meshes a region of these counts (within the minimums), and the
+  // rotation to its canonical form (TemplateChoice).
+  std::optional<int> (*applies)(const CurveCounts& counts, const TemplateOptions& options);
+  // Its count rule: the subregions' counts from canonical counts, in realization order.
+  std::vector<CurveCounts> (*children)(const CurveCounts& canonical, const TemplateOptions& options);
+  // Its realization on a canonical region: the nodes and quads it adds, and the
+  // subregions in the order `children` lists them (none for T0).
+  std::vector<Region> (*realize)(const Region& canonical, MeshBuilder& builder, const TemplateOptions& options);
+};
+
+// The catalogue, in the order select_template tries the rows: T0, T1, T2 (four
+// curves), T4 before T3 (three), T5 (two).
+const std::vector<TemplateRow>& template_table();
+const TemplateRow& template_row(TemplateKind kind);
 
 // Rotates counts (or any per-curve list) so that element i is old element i + rotation.
 template <typename T>
