@@ -280,7 +280,7 @@ std::vector<FaceMeshResult> mesh_variants(const FaceChart& chart, const std::opt
         before.keep_square_pairs = false;
       }
       out.push_back(chart.mesh(decomposition, edge_size, options, &memo));
-    } catch (const std::exception&) {  // the plain decomposition's mesh stays, as in face_route
+    } catch (const InputError&) {  // the plain decomposition's mesh stays, as in face_route
     }
   }
   return out;
@@ -346,7 +346,7 @@ FaceMeshResult mesh_face_o_grid(const TopoDS_Face& face, int face_index, const F
     try {
       FaceMeshResult r = chart.mesh(*halves, edge_size, options, &halves_meshed);
       if (!best || better_face_mesh(r, *best)) best = std::move(r);
-    } catch (const std::exception& e) {  // the other places are still tried
+    } catch (const InputError& e) {  // the other places are still tried
       problem = e.what();
     }
   }

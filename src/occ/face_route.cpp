@@ -112,7 +112,7 @@ std::vector<std::vector<int>> screened_corner_sets(const FaceBoundary& boundary,
       const QuadMesh mesh = mesh_boundary(BoundaryLoop{boundary.uv, corners}, screening);
       const QualitySummary q = summarize_quality(mesh, up);
       screened.push_back({q.inverted, q.scaled_jacobian.min, q.scaled_jacobian.avg, &corners});
-    } catch (const std::exception&) {  // a set the templates cannot mesh is no candidate
+    } catch (const InputError&) {  // a set the templates cannot mesh is no candidate
     }
   }
   std::stable_sort(screened.begin(), screened.end(), [](const Screened& a, const Screened& b) {
@@ -203,6 +203,10 @@ void refuse_bad_quads(const FaceMeshResult& mesh, const std::string& name, const
 // The best mesh is kept and smoothed on the surface; bad quads that remain (inverted,
 // degenerate or folded: is_bad_quad) refuse the face unless allow_inverted
 // (never a silent bad mesh).
+// A route says it cannot mesh the face by throwing InputError (FaceRefusalError with
+// its code); any other exception is a broken invariant, caught by no route here:
+// mesh_one_face refuses the face as an internal failure, named in the report, rather
+// than another route hiding it.
 FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary& boundary, const PoleSector* sector,
                               const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size) {
   const auto start = std::chrono::steady_clock::now();
@@ -240,7 +244,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     try {
       if (auto ring = mesh_face_ring(index.face(f), f, boundary, nodes, index.vertex_count())) keep(std::move(*ring));
       keep(mesh_face_o_grid(index.face(f), f, boundary, nodes, index.vertex_count(), size, options.templates));
-    } catch (const std::exception& e) {  // the decomposition below is the other route
+    } catch (const InputError& e) {  // the decomposition below is the other route
       note_refusal(e);
     }
   } else if (boundary.inner_wires == 0) {
@@ -248,7 +252,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     for (const std::vector<int>& corners : natural_corners) {
       try {
         keep(mesh_face(index, f, boundary, corners, nodes, options.templates));
-      } catch (const std::exception& e) {  // an internal failure of one route is noted; others follow
+      } catch (const InputError& e) {  // a route that cannot mesh the face is noted; others follow
         note_refusal(e);
       }
     }
@@ -256,13 +260,13 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     if (boundary.polar && !user_corners) {
       try {
         if (auto disk = mesh_polar_disk(index.face(f), boundary, nodes, options.templates)) keep(std::move(*disk));
-      } catch (const std::exception& e) {  // the corner routes stand
+      } catch (const InputError& e) {  // the corner routes stand
         if (!best) note_refusal(e);
       }
       if (sector) {
         try {
           if (auto tip = mesh_pole_sector(index.face(f), *sector, nodes, options.templates)) keep(std::move(*tip));
-        } catch (const std::exception& e) {  // the disk routes stand
+        } catch (const InputError& e) {  // the disk routes stand
           if (!best) note_refusal(e);
         }
       }
@@ -273,7 +277,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     if (boundary.has_degenerate_edge && !boundary.polar && !user_corners) {
       try {
         if (auto disk = mesh_disk_in_space(index.face(f), boundary, nodes, options.templates)) keep(std::move(*disk));
-      } catch (const std::exception& e) {  // the corner routes stand
+      } catch (const InputError& e) {  // the corner routes stand
         if (!best) note_refusal(e);
       }
     }
@@ -285,7 +289,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
         if (auto disk = mesh_face_disk(index.face(f), f, boundary, nodes, index.vertex_count(), options.templates)) {
           keep(std::move(*disk));
         }
-      } catch (const std::exception& e) {  // the other routes stand
+      } catch (const InputError& e) {  // the other routes stand
         if (!best) note_refusal(e);
       }
     }
@@ -305,7 +309,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     try {
       patches_searched = std::move(
           mesh_face_decomposed(index.face(f), f, boundary, nodes, index.vertex_count(), size, searching).front());
-    } catch (const std::exception&) {  // the decomposition without the search stands
+    } catch (const InputError&) {  // the decomposition without the search stands
     }
   };
   if (decompose && (!best || best->bad > 0 || best->collapsed > 0 || best->worst_corner < kGoodEnoughCorner)) {
@@ -320,7 +324,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
       search_patches();
       // No patch poor enough, or none bettered: the same mesh again.
       if (patches_searched && patches_searched->quads == plain_quads) patches_searched.reset();
-    } catch (const std::exception& e) {  // a mesh already found stays
+    } catch (const InputError& e) {  // a mesh already found stays
       if (!best) note_refusal(e);
     }
   }
@@ -344,7 +348,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
       for (const std::vector<int>& corners : screened_corner_sets(boundary, sets, options.templates)) {
         try {
           compete(mesh_face(index, f, boundary, corners, nodes, options.templates));
-        } catch (const std::exception&) {  // a set the templates cannot mesh on the surface is one fewer
+        } catch (const InputError&) {  // a set the templates cannot mesh on the surface is one fewer
         }
       }
     }
