@@ -59,12 +59,9 @@ CornerSearchResult mesh_boundary_best_corners(const BoundaryLoop& loop, const Me
 // kPatchSearchBelow, the first kPatchSearchSets candidate sets are meshed as above and
 // the one that beats given before smoothing returned; else (or when none does) a copy
 // of given. Nothing is smoothed: the face is, whole, and the caller compares it with
-// its mesh without the search then. Measured on the 16 parts at D/25 and D/100:
-// patches searched from 0.5 instead raised fewer means (as1-tu-203.stp 0.8753
-// against 0.8782 at D/25); 12 sets instead of 40 halved the search's meshing time
-// (918_pump at D/100 1.1 -> 0.5 s) with the same worst quads on every part but one,
-// higher there (as1-tu-203.stp at D/100 0.487 -> 0.500; both judged before
-// smoothing); 6 lost linkrods.step's gain at D/25 (0.353 -> 0.266).
+// its mesh without the search then. Patches searched from 0.5 instead raised fewer
+// means; 12 sets instead of 40 halve the search's meshing time with worst quads as
+// good or better (both judged before smoothing); 6 lose some of the gains.
 constexpr double kPatchSearchBelow = 0.8;
 constexpr int kPatchSearchSets = 12;
 QuadMesh mesh_patch_best_corners(const BoundaryLoop& loop, const MeshOptions& options, const QuadMesh& given);

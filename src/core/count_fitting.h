@@ -29,8 +29,7 @@ inline void check_goal(double goal, const std::string& what) {
 
 // A side of a three-curve region (a face bounded by three edges, a three-sided patch)
 // takes at least this many segments: the templates' minimum for three curves, and a
-// triangle of 4 segments would be one quad with a straight angle (scaled Jacobian 0,
-// measured on faces of Zylkopf.stp and SampleCrankshaft4A.stp).
+// triangle of 4 segments would be one quad with a straight angle (scaled Jacobian 0).
 constexpr int kThreeCurveSideMinimum = 2;
 
 // Relative cost of count n for a curve with goal g: |n - g| / g.

@@ -3,8 +3,7 @@
 //
 // Two curves with corners on a smooth circle (T5) put a quad with a corner near
 // 180 - 360/n degrees at each corner, so its scaled Jacobian halves each time the mesh
-// is refined (0.112, 0.057, 0.028 measured on the caps of cylinder.brep at D/25, D/50,
-// D/100). Here every boundary node has two quads, and the worst corners sit at the
+// is refined. Here every boundary node has two quads, and the worst corners sit at the
 // square's corners (near 135 degrees on a circle), whatever the size.
 //
 // The loop's points are split into four arcs of a, b, a, b segments (a + b = n / 2,

@@ -2,12 +2,12 @@
 //
 // Such a node (a doublet) has both its edges shared by the same two quads, so each of
 // them has a straight or reflex angle there, which no node move can fix (one quad
-// gains what the other loses: scaled Jacobian 0 measured on a patch of
-// 918_pump_carter_sup_21_03_2006.stp). Removing the node and merging its quads
-// removes one node and one quad, so nodes = 1 + quads + boundary_edges / 2 - holes
-// still holds. A merge is kept only if the merged quad's worst corner is no worse
-// than the two quads' worst, unless `even_if_worse`: then a merged quad with a reflex
-// corner at an interior node is left for smoothing to open (the caller compares).
+// gains what the other loses, so at best both keep a straight angle, of scaled
+// Jacobian 0). Removing the node and merging its quads removes one node and one
+// quad, so nodes = 1 + quads + boundary_edges / 2 - holes still holds. A merge is
+// kept only if the merged quad's worst corner is no worse than the two quads' worst,
+// unless `even_if_worse`: then a merged quad with a reflex corner at an interior node
+// is left for smoothing to open (the caller compares).
 #pragma once
 
 #include <vector>

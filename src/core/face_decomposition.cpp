@@ -351,8 +351,8 @@ class Decomposer {
   }
 
   // A reflex corner much nearer to a boundary point in front of it than to its own
-  // neighbours is a thin junction (a thin flange meeting a plate, part.step face 22:
-  // 0.22 across, segments of 8.5): that point becomes a coarse vertex, so that the
+  // neighbours is a thin junction (a thin flange meeting a plate, far narrower than
+  // the segments along it): that point becomes a coarse vertex, so that the
   // triangulation can cut straight across and the flange stays one band of quads
   // instead of a fan of slivers into the middle of its long side.
   void join_thin_junctions() {

@@ -80,59 +80,55 @@ struct DecompositionOptions {
   // At a corner turning at least 60 degrees (interior angle 120 or less), another
   // loop's point inside the circle through the corner and its two coarse neighbours
   // makes the smallest-angle flips fan cuts into the corner: a 90-degree plate corner
-  // of as1-tu-203.stp (face 85) ended in 4 patches, quads of 5.7 to 15.7 degrees.
+  // ended in several patches, with quads of sliver corners.
   // With this set, the longer piece next to such a corner is split (up to 8 times
   // per corner) until that circle is empty, so the corner's ear stays one triangle.
-  // It also moves cuts elsewhere, sometimes for the worse (as1 faces 66 and 145: worst
-  // corner 0.458 to 0.320), so callers mesh both and keep the better.
+  // It also moves cuts elsewhere, sometimes for the worse, so callers mesh both and
+  // keep the better.
   bool clear_corner_ears = false;
   // Two triangles whose quadrilateral has a corner outside [25, 155] degrees are
   // still one patch when its worst corner beats the worst corner of one of them
-  // (a thin flange meeting a plate, part.step face 22: two slivers of 0.6 degrees
-  // across the junction become a band with corners of 19 and 161 degrees), and a
-  // sliver diagonal of such a pair splits no piece. It also changes the patches of
-  // other faces, sometimes for the worse (Zylkopf.stp face 6 at diagonal / 100:
-  // worst quad 0.44 to 0.18), so callers mesh both and keep the better.
+  // (a thin flange meeting a plate: two slivers of under a degree across the junction
+  // become a band with corners near 20 and 160 degrees), and a sliver diagonal of
+  // such a pair splits no piece. It also changes the patches of other faces,
+  // sometimes for the worse, so callers mesh both and keep the better.
   bool merge_sliver_pairs = true;
   // The gap in front of a piece also counts its neighbours' points straight in front
   // of it (within 30 degrees of its normal): across a sharp corner, the neighbour
   // runs back along the piece. Without it a loop of three pieces has no point in
   // front of any (all are the piece's or its neighbours'): a crescent or a triangle
-  // with a cusp stays one thin patch (t20_data.step at D/50: worst quad 0.022, 0.050
-  // with it). It also moves cuts elsewhere (part.step face 19 at D/100: 0.020 to
-  // 0.012), so callers mesh both and keep the better.
+  // with a cusp stays one thin patch, with a worse worst quad. It also moves cuts
+  // elsewhere, sometimes for the worse, so callers mesh both and keep the better.
   bool neighbours_across_corners = true;
   // Where a coarse vertex faces a point of the boundary across a band narrower than
   // the segments at both (each side within 30 degrees of the other's normal), that
   // point is a coarse vertex too, so that cuts go straight across the band and its
-  // quads stand upright: the flanges of part.step's face 17, 4.8 wide with segments
-  // of 8.5, were cut at coarse vertices of each side placed apart, into T2s whose
-  // quads leaned by half a segment or more (0.3 to 0.6). Callers mesh without it too
-  // where it added a point, and keep the better.
+  // quads stand upright: the flanges of an L-shaped face, about half a segment wide,
+  // were cut at coarse vertices of each side placed apart, into T2s whose quads
+  // leaned by half a segment or more. Callers mesh without it too where it added a
+  // point, and keep the better.
   bool cross_thin_bands = true;
   // A reflex corner's two sides, continued straight into the domain, end at the
   // boundary point nearest to where they first meet it (within 20 degrees of the
   // continued side): that point is a coarse vertex, so that a cut can continue the
   // side and both patches at the corner get a corner near 90 degrees there. Without
-  // it an L-shaped plate with rounded outer corners (part.step face 9) was cut from
-  // its reflex corner to a rounded corner into two T2 patches with corners of 120
-  // and 150 degrees (mean quad 0.72 before smoothing). Callers mesh without it too
-  // where it added a point, and keep the better.
+  // it an L-shaped plate with rounded outer corners was cut from its reflex corner to
+  // a rounded corner into two T2 patches with corners of 120 and 150 degrees. Callers
+  // mesh without it too where it added a point, and keep the better.
   bool extend_reflex_corners = true;
   // A cut leaving the boundary at a sliver angle splits the piece there (so the cut
   // can start elsewhere), but the diagonal of a pair merged into a patch whose
   // corners all lie within 30 degrees of square is no cut: its slivers are left as
-  // they are. Without it the thin rectangle at the foot of an L (63.5 by 16.5, a
-  // diagonal at 14.5 degrees) was split in two and its neighbours made triangles
-  // (part.step face 9: mean quad 0.81 before smoothing, 0.95 with it). It also moves
-  // cuts elsewhere (part.step face 22: worst quad 0.39 to 0.02), so callers mesh
+  // they are. Without it the thin rectangle at the foot of an L (a diagonal at about
+  // 15 degrees) was split in two and its neighbours made triangles, for a lower mean
+  // quality. It also moves cuts elsewhere, sometimes for the worse, so callers mesh
   // without it too and keep the better.
   bool keep_square_pairs = true;
   // A boundary point turning inwards (a reflex point) by at least this many degrees
   // is a coarse vertex, CAD vertex or not. 60, as for any point, on faces: 20 there
-  // moved as1-tu-203.stp's worst quad at D/50 from 0.39 to 0.30. The boundary
-  // route's fallback (planar_loop_decomposition.h) takes 20: a side bent inwards by
-  // 21 degrees next to a cusp folded the one patch it left (generated case 1555).
+  // gave worse worst quads. The boundary route's fallback
+  // (planar_loop_decomposition.h) takes 20: a side bent inwards by 21 degrees next to
+  // a cusp folded the one patch it left (generated case 1555).
   double reflex_point_turn = 60.0;
 };
 

@@ -1,8 +1,8 @@
 // turn_flat_boundary_corners: a boundary node that lies in one quad alone, where the
 // boundary is nearly straight, is a corner of nearly 180 degrees of that quad. No node
 // move mends it: the node and its two neighbours along the boundary are shared with
-// the next face and stay (part.step at D/50: a corner of 177.9 degrees, scaled
-// Jacobian 0.011; Zylkopf.stp at D/50: 179.2 degrees, 0.014).
+// the next face and stay (a corner a degree or two short of 180 has a scaled
+// Jacobian near 0).
 //
 // The quad and a neighbour across one of its two inner edges make a hexagon; cut
 // along the diagonal from the boundary node instead, the node lies in two quads and

@@ -4,11 +4,10 @@
 //
 // The O-grid cuts a ring in two halves at its nearest points, and the halves' counts
 // then differ by the twist between the loops: on a ring one quad thick that puts a
-// transition where there is no room (scaled Jacobian 0.12 on a cylinder band of
-// as1-tu-203.stp at D/100). Here hole point i is paired with outer point i + k, the
-// offset k with the least summed squared distance, and the rows between them are
-// straight interpolations, as many as the mean pair distance over the loops' mean
-// spacing.
+// transition where there is no room (a thin cylinder band got a poor worst quad so).
+// Here hole point i is paired with outer point i + k, the offset k with the least
+// summed squared distance, and the rows between them are straight interpolations, as
+// many as the mean pair distance over the loops' mean spacing.
 #pragma once
 
 #include <optional>

@@ -83,8 +83,8 @@ int make_nodes_even(std::vector<char> odd, const std::vector<ParityUnit>& units,
       // No odd partner and no unit of its own: the path to the nearest node with a
       // unit of its own, and that unit (the nodes on the way flip twice). Faces left
       // out of a shape (refused, or not in --faces) give their neighbours such units:
-      // 918_pump_carter_sup_21_03_2006.stp without faces 98 to 100 had one odd face
-      // among meshed neighbours only, and was refused as impossible to make even.
+      // a shape meshed without a few of its faces had one odd face among meshed
+      // neighbours only, and was refused as impossible to make even.
       change_path_to(exit);
       change_unit(units[best_own_unit(exit)], goal, minimum, count);
     } else {

@@ -1,7 +1,7 @@
 // PatchMeshMemo: template meshes of patches kept by their input, for routes that mesh
 // the same patch more than once. An O-grid's cut places t and t + 4 (of 8) give the
-// same two halves in the other order, so each half was meshed, and untangled, twice;
-// on U_Joint_2.stp at D/25 the repeats were 39% of the untangler's repair tries.
+// same two halves in the other order, so each half was meshed, and untangled, twice,
+// and the repeats made a large share of the untangler's repair tries.
 #pragma once
 
 #include <deque>

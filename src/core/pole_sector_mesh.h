@@ -7,8 +7,8 @@
 // meet it, with both its sides on the seam (collapsed). The disk around the pole puts
 // four quads there; split in two, two quads meet the apex. On a cone of half-angle a
 // a quad's corner at the tip, between chords along generators a quarter or a half
-// turn apart, is at most 2 asin(sin a sin 45 deg) or 2 a: on Cone_1.brep (a = 18.4
-// degrees) 25.9 or 36.9 degrees, scaled Jacobian 0.43 or 0.57 as measured.
+// turn apart, is at most 2 asin(sin a sin 45 deg) or 2 a: for a = 18.4 degrees, 25.9
+// or 36.9 degrees.
 #pragma once
 
 #include <optional>

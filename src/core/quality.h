@@ -67,8 +67,8 @@ struct QualityStats {
 constexpr double kInvertedBelow = 1e-9;
 // On a curved surface, a corner straight in the face's chart is measured against the
 // surface normal at its node, which the chart and the edges' tolerance fix to about
-// that much (corners of -4.5e-6 to -9.6e-4 measured on the cylinder faces of
-// Zylkopf.stp): values in [-kSurfaceInvertedBelow, 0) are straight angles, degenerate,
+// that much (straight corners on cylinder faces come out slightly negative, down to
+// nearly -1e-3): values in [-kSurfaceInvertedBelow, 0) are straight angles, degenerate,
 // not folds.
 constexpr double kSurfaceInvertedBelow = 1e-3;
 constexpr double kDegenerateUpTo = 1e-6;

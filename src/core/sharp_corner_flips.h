@@ -1,22 +1,21 @@
 // flip_lopsided_sharp_corners: a boundary node at a sharp corner (at most 150
 // degrees) that lies in two quads, one of them with a poor corner there (scaled
 // Jacobian under kFlatCornerBelow), shares an angle one quad could take whole. No
-// node move mends it where the face is thin at the corner: capot.brep's faces 14 and
-// 16 end in a tip of 14 degrees cut off by an edge 1.2 long, whose corner node of 98
-// degrees lay in two quads, 90 and 8 degrees (scaled Jacobian 0.138 after smoothing),
-// the inner node between them having no room to move in the thin tip.
+// node move mends it where the face is thin at the corner: a face ending in a narrow
+// tip cut off by a short edge had its corner node of about 100 degrees in two quads,
+// one with nearly all of it and one with a sliver of a few degrees (poor even after
+// smoothing), the inner node between them having no room to move in the thin tip.
 //
 // The two quads make a hexagon around their shared inner edge (from the corner to an
 // inner node); cut along one of the other two diagonals instead, the corner node
 // lies in one quad, and the inner node in one quad fewer (kept only where it keeps
 // three or more: no doublet). Of the two diagonals, the one whose two new quads'
 // worst corner is the better where the nodes are now, or the other: which ends
-// better only smoothing tells (capot.brep's face 14, the mirror image of face 16,
-// meshed the other way round: 0.23 after smoothing with the one, 0.29 with the
-// other). Node and quad counts stay, so nodes = 1 + quads +
-// boundary_edges / 2 - holes still holds. The new quads may be poor where the nodes
-// are: the caller smooths after the flips and weighs the result against the mesh
-// without them (as for flat_corner_turns.h).
+// better only smoothing tells (of two faces mirroring each other, meshed the other
+// way round, each ended better after smoothing with a different diagonal). Node and
+// quad counts stay, so nodes = 1 + quads + boundary_edges / 2 - holes still holds.
+// The new quads may be poor where the nodes are: the caller smooths after the flips
+// and weighs the result against the mesh without them (as for flat_corner_turns.h).
 #pragma once
 
 #include <vector>

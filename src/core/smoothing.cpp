@@ -47,13 +47,11 @@ constexpr int kStepsPerSize = 4;
 // A move must raise the worst corner around the node by kWorstGain of its value (at
 // least of kWorstGainFloor), or keep it and raise the sum of the corners there (up to
 // 12) by kSumGain: smaller gains cost passes and change nothing one sees. With any
-// gain counted, the Laplacian moves rippled through whole O-grid disks (38,000 of
-// cylinder.brep's 106,000 nodes a face at D/400, every pass); a relative gain stops
-// that (smoothing there 0.66 -> 0.24 s, under the meshing's 0.30 s) yet lets sliver
-// quads (scaled Jacobian ~0.02) keep climbing by small steps. Measured on the 16
-// parts at D/25 and D/100 against any gain: no minimum lower by more than 0.01
-// (t20_data.step 0.096 -> 0.088; as1-tu-203.stp 0.247 -> 0.264 and
-// TrimmedSurface.brep 0.312 -> 0.421 rose), means within 0.005.
+// gain counted, the Laplacian moves rippled through whole O-grid disks (a third of a
+// fine disk's nodes moving in every pass); a relative gain stops that (the smoothing
+// then costs less than the meshing) yet lets sliver quads (scaled Jacobian ~0.02)
+// keep climbing by small steps. Against any gain counted, it leaves the worst quads
+// and the means of CAD parts about as they were, some a little lower, some higher.
 constexpr double kWorstGain = 1e-3;
 constexpr double kWorstGainFloor = 0.01;
 constexpr double kSumGain = 1e-3;
@@ -62,15 +60,14 @@ constexpr double kSumGain = 1e-3;
 // into a triangle): a move may not bring any quad around the node to an edge under
 // this fraction of its longest, unless that quad's ratio rises. Without it the
 // compass search that preceded the ascents drew interior nodes next to boundary
-// nodes: quads under 0.05 went from 0 to 48 on as1-tu-203.stp at D/25, and one of
-// paper_example3_t1.json's to 0.0016.
+// nodes, leaving quads with a near-zero scaled Jacobian where there had been none.
 constexpr double kShortEdgeRatio = 0.1;
 
 // A corner as the smoother judges it: the lower of its scaled Jacobian against the
 // surface normals and in the quad's own plane (its diagonals' normal, where a shell
 // element's Jacobian is taken). They part on a quad spanning a tight curve; with the
-// surface's alone, the steepest ascent raised a warped quad of Zylkopf.stp (D/25) to
-// 0.165 there while its own plane fell to 0.0045 (corners of 17 and 155 degrees).
+// surface's alone, the steepest ascent raised a warped quad against the surface
+// normals while in its own plane it fell to a sliver (corners near 17 and 155 degrees).
 double judged_corner(const QuadCorners& c, int j) { return std::min(c.jacobian[j], c.own_jacobian[j]); }
 
 // The corners of a quad whose angles its corner i's node decides: its own and its two
@@ -269,15 +266,14 @@ class Smoother {
         // First the mean of the neighbours; then, where a corner stays poor, the
         // steepest ascent of the worst corner from wherever the Laplacian left the
         // node. With the ascent only where the Laplacian failed, the Laplacian's
-        // small gains kept a 0.02 corner of 918_pump_carter_sup_21_03_2006.stp (D/100)
-        // from it for all eight passes (it ended at 0.096; now 0.26).
+        // small gains kept a sliver corner from it for all eight passes, leaving the
+        // corner far lower than the ascent takes it.
         LocalQuality here = local_quality(n);
         bool moved = move_to_neighbours_mean(n, here);
         // Where the worst is fair but some corner is under good_enough, the sum's
-        // steepest ascent instead, the worst held: means on the 16 parts at D/25 rise
-        // by 0.001 to 0.009 (0.824 -> 0.831 on part.step; with every node, not only
-        // those under good_enough, 0.843, at twice the smoothing time, and 7 times
-        // the meshing's on Cone_1.brep).
+        // steepest ascent instead, the worst held: it raises the means a little (with
+        // every node, not only those under good_enough, a little more, at twice the
+        // smoothing time, and several times the meshing's on a cone).
         if (here.worst < options.search_below) {
           moved = ascend_worst_corner(n, here) || moved;
         } else if (here.worst < options.good_enough) {
@@ -288,8 +284,8 @@ class Smoother {
         // non-convex generated boundaries: 6 keep an inverted quad without it, 5 with.
         // So too around a collapsed quad (an edge under kCollapsedEdgeRatio of its
         // longest, next to a tiny CAD edge): its corners may be fine, and nothing
-        // but the edge ratio says which way to go. Without it 2 quads of
-        // U_Joint_2.stp at D/100 stayed collapsed.
+        // but the edge ratio says which way to go. Without it such quads next to tiny
+        // CAD edges stayed collapsed.
         if (here.worst < 0 || here.collapsed > 0) moved = compass_search(n, here) || moved;
         if (!moved) continue;
         ++moves;

@@ -68,14 +68,13 @@ SmoothingResult smooth_mesh(const std::vector<Quad>& quads, int fixed, std::vect
 // smooth_mesh of a mesh already smoothed but for a local change: only the nodes
 // marked in `region` move (the change and a few rings of nodes around it). A layout
 // changed around one boundary corner (flat_corner_turns.h, sharp_corner_flips.h) is
-// smoothed so at the cost of its neighbourhood: smoothed whole for each such
-// layout, SampleCrankshaft4A.stp at D/100 spent 1.4 s smoothing, 0.4 s without them.
+// smoothed so at the cost of its neighbourhood: smoothing the whole face for each
+// such layout made the smoothing several times slower on faces with many of them.
 // Folds are unfolded (area_untangling.h) among the quads touching the region and by
 // its nodes alone: a flipped layout is mostly folded where the smoothed nodes are
-// (capot.brep keeps 0.138 at the default size when such layouts are passed over),
-// and unfolding the whole face's quads took 18 ms a layout on a 1,828-quad face of
-// t20_data.step at D/100 (a fold at a cusp, elsewhere, that it failed to undo each
-// time).
+// (a thin tip keeps its poor corner when such layouts are passed over), and
+// unfolding the whole face's quads was slow for each layout on a large face (a fold
+// at a cusp, elsewhere, that it failed to undo each time).
 SmoothingResult smooth_mesh_near(const std::vector<Quad>& quads, int fixed, std::vector<Vec3>& param,
                                  std::vector<Vec3>& position, std::vector<Vec3>& normal, const PlaceNode& place,
                                  std::vector<bool> region, const SmoothingOptions& options = {});

@@ -14,8 +14,8 @@ namespace {
 
 constexpr double kBadCorner = 1e-6;  // scaled Jacobian at or below: degenerate or inverted
 
-// The compass search's eight directions, (cos, sin) of d * pi / 4, computed once: they
-// were computed for every try (1.7% of a whole U_Joint_2.stp run, reading included).
+// The compass search's eight directions, (cos, sin) of d * pi / 4, computed once
+// rather than for every try, where they cost a noticeable share of a whole run.
 struct CompassDirections {
   std::array<double, 8> cos, sin;
   CompassDirections() {
@@ -138,8 +138,8 @@ class Untangler {
   // its position decides, by a compass search whose step starts at a quarter of its
   // shortest edge. Its outcome is kept only if it ends with at most `to_beat` bad
   // quads (the Laplacian's), so it stops once it cannot get there even at its best
-  // rate so far: on a hopeless candidate of part.step at D/100 it spent 0.8 s taking
-  // 2,812 bad quads to 2,190, against the Laplacian's 214.
+  // rate so far: a hopeless candidate otherwise spent long on thousands of bad quads
+  // without ever nearing the Laplacian's count.
   std::vector<NodeId> maximize_worst_corners(std::vector<int> bad, std::size_t to_beat) {
     constexpr int kPasses = 30;
     Zone z = zone_around(bad);
@@ -168,10 +168,9 @@ class Untangler {
 
   // Which nodes a visit of improve_node would leave in place: those whose last visit
   // did, no node of their quads having moved since (the visit depends on nothing
-  // else). Skipping them changes nothing. It pays where repairs stall: the
-  // untangling of part.step at D/100 (one thread, callgrind) 3.83 G instructions
-  // without it, 3.43 G with; where most nodes move in every pass the look at their
-  // quads costs about 1% (U_Joint_2.stp at D/25, as1-tu-203.stp at D/100).
+  // else). Skipping them changes nothing. It pays where repairs stall, and many
+  // nodes are visited again unchanged; where most nodes move in every pass the look
+  // at their quads costs little.
   class Settling {
    public:
     explicit Settling(std::size_t nodes) : moved_at_(nodes, -1), settled_at_(nodes, -1) {}
@@ -209,8 +208,8 @@ class Untangler {
   // each quad around it; or, as soon as one is at or below `stop_at`, that one. A try
   // that cannot beat the best so far is rejected at its first such corner, which is
   // looked at first in the next try (`first`: its quad in n's list and corner). With
-  // n's place in each quad found once, the untangling of U_Joint_2.stp at D/25 (one
-  // thread, callgrind) 2.26 G instructions before, 0.90 G after, the same meshes.
+  // n's place in each quad found once, the untangling does well under half the work
+  // for the same meshes.
   struct CornerNear {
     int quad = 0, corner = 0;
   };

@@ -2,13 +2,13 @@
 // segments wide (two opposite sides of at most kNarrowBand segments each) gets equal
 // counts on its two long sides, so it is a mapped grid. One quad across has no room
 // for a transition at all (the templates' T1 and T2 need two rows); two quads across
-// a fillet bent 90 degrees had room, but the transition folded a quad (scaled Jacobian
-// -0.05 against the quad's own normal on a toroidal fillet of
-// SampleCrankshaft4A.stp). The shorter long side's longest edge takes the difference:
-// a free edge alone, or a chained edge with its whole chain (so the chain's faces stay
-// mapped). Ends of 1 and 2 segments are made equal likewise, or the band stays odd
-// and the parity fix changes one of its edges (TrimmedSurface.brep: a long side,
-// worst quad 0.47, mean 0.78; 1.00 mapped).
+// a fillet bent 90 degrees had room, but the transition folded a quad (a negative
+// scaled Jacobian against the quad's own normal on a toroidal fillet). The shorter
+// long side's longest edge takes the difference: a free edge alone, or a chained edge
+// with its whole chain (so the chain's faces stay mapped). Ends of 1 and 2 segments
+// are made equal likewise, or the band stays odd and the parity fix changes one of
+// its edges (a long side, which then needs a transition, its quads far worse than the
+// mapped grid's).
 #pragma once
 
 #include <utility>

@@ -4,8 +4,8 @@
 // Jacobian is at most the sine of that angle. Between curves that part, the angle
 // grows with the chords' length, so such an edge end gets a first segment as long as
 // the target size allows, whatever the edge's count (refinements and the interval
-// assignment raise counts; U_Joint_2.stp's slivers were 7 segments of 2.3 on edges
-// of 16 at size 5.5, a tip chord angle of 0.5 degrees).
+// assignment raise counts: a sliver's edges were cut into segments well under the
+// target size, leaving a tip chord angle of a fraction of a degree).
 #pragma once
 
 #include <vector>

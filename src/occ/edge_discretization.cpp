@@ -45,8 +45,8 @@ double tangent_turn(const BRepAdaptor_Curve& curve) {
 
 // An edge point this many times the box's diagonal out of the box is off every face
 // the edge bounds: a damaged curve. A random edit of an IGES file moved one pole of a
-// B-spline edge of tank.brep's shape 400 km out of a box 2.6 m across; the command
-// then worked 84 s before its arc-length spacing failed the whole job.
+// B-spline edge many orders of magnitude farther out than the box is across; the
+// command then worked long before its arc-length spacing failed the whole job.
 constexpr double kStrayOverDiagonal = 1.0;
 constexpr int kStraySamples = 64;
 
@@ -67,10 +67,9 @@ double distance_out_of(const BRepAdaptor_Curve& curve, const Box3& box) {
 
 // A vertex whose tolerance is this fraction of the box's diagonal joins edges that do
 // not meet: OpenCASCADE's healing widened it to bridge the gap, and the mesh would
-// pull the edges to the vertex's point across it. Random edits of the parts' STEP
-// files (a point's coordinate changed) gave tolerances of 2% to 100% of the diagonal
-// (999,990 on cube_filet.stp); the 16 parts themselves stay under 0.07%
-// (SampleCrankshaft4A.stp: 0.22 on 341).
+// pull the edges to the vertex's point across it. Random edits of STEP files (a
+// point's coordinate changed) gave tolerances of a few percent of the diagonal to far
+// beyond it; undamaged parts stay under a tenth of a percent.
 constexpr double kGapOverDiagonal = 0.01;
 
 // Why the edge's vertices make it unusable, or "" when they do not.

@@ -440,8 +440,8 @@ FaceBoundary face_boundary(const ShapeIndex& index, int face_index, const std::v
   // this one's start tangent, signed by the face normal there.
   const int count = static_cast<int>(occurrences.size());
   // One surface adaptor for the face: each costs the face's (u, v) bounds, every
-  // pcurve's, and one per corner was an eighth of a U_Joint_2.stp run's main thread
-  // (callgrind, D/25, before the faces are meshed).
+  // pcurve's, and one per corner made a large share of the main thread's work before
+  // the faces are meshed.
   const BRepAdaptor_Surface surface(face);
   for (int k = 0; k < count; ++k) {
     const WireWalk::Occurrence& in = occurrences[(k + count - 1) % count];

@@ -272,8 +272,8 @@ std::vector<FaceMeshResult> mesh_variants(const FaceChart& chart, const std::opt
       // Cleared corner ears that split no piece give the plain decomposition again.
       if (variant.clear_corner_ears && decomposition.corner_splits == 0) continue;
       // Corner ears cleared also as before reflex extensions and square pairs where
-      // those acted, as they move cuts there too (as1-tu-203.stp face 81 at D/25:
-      // 0.44 that way, 0.28 with them).
+      // those acted, as they move cuts there too (the ears cleared alone can give a
+      // better worst quad than with them).
       if (k == 0 && (decomposition.reflex_extensions > 0 || decomposition.square_pair_slivers > 0)) {
         DecompositionOptions& before = variants.emplace_back(variant);
         before.extend_reflex_corners = false;

@@ -53,8 +53,8 @@ std::vector<Vec3> local_positions(const FaceBoundary& b, const std::vector<Vec3>
 
 // A disk meshed around a pole (polar (x, y), the pole at the origin) has no node
 // there unless one is put there: otherwise a quad spans the pole (a cone's tip cut
-// off: 41 below the apex on Cone_1.brep at D/25). The interior node nearest the
-// origin moves onto it, unless that inverts a quad.
+// off well below the apex). The interior node nearest the origin moves onto it,
+// unless that inverts a quad.
 void put_a_node_on_the_pole(QuadMesh& mesh, int boundary_points) {
   const int count = static_cast<int>(mesh.nodes.size());
   if (count <= boundary_points) return;
@@ -148,8 +148,8 @@ FaceMeshResult place_space_mesh(const TopoDS_Face& face, const FaceBoundary& b, 
   // neighbour already placed, breadth first from the boundary: OpenCASCADE's Newton
   // step converges from there. Started from the previous node in creation order
   // (across a template's rows), it often failed into the global search (a grid over
-  // the surface, then projections on iso-curves), which took 60% of the face
-  // meshing of U_Joint_2.stp.
+  // the surface, then projections on iso-curves), which then took most of the face
+  // meshing's time.
   TopLoc_Location location;  // the surface is stored in the face's local frame
   const Handle(Geom_Surface) geom = BRep_Tool::Surface(face, location);
   ShapeAnalysis_Surface analysis(geom);

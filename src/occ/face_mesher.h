@@ -54,9 +54,9 @@ struct FaceMeshResult {
 };
 
 // Whether the surface's normal direction at a point is not to be trusted: S_u and
-// S_v within about half a degree of parallel (the collapsed corner of a Bezier patch:
-// 1e-3 measured on capot.brep), or one of them vanishing against the other (a pole:
-// 4e-15 measured on U_Joint_2.stp).
+// S_v within about half a degree of parallel (the collapsed corner of a Bezier patch
+// falls well inside that), or one of them vanishing against the other (a pole, where
+// the ratio falls to rounding noise).
 inline bool singular_normal(const gp_Vec& du, const gp_Vec& dv) {
   const double a = du.Magnitude(), b = dv.Magnitude();
   return du.Crossed(dv).Magnitude() <= 1e-2 * a * b || std::min(a, b) <= 1e-9 * std::max(a, b);

@@ -40,9 +40,9 @@ struct InvertedQuadsError : FaceRefusalError {
 // Whether some quad of `mesh` spans more of its surface's turning than a segment may
 // stand for (segments_for_turn, the edges' rule): the surface normals at two of its
 // corners more than 45 degrees apart. Such a face is coarse for its curvature, and
-// finer edges may cure its inverted quads however many it has: a fillet band 1.5
-// wide twisting along 25 at size 8.6 (a generated part at D/10) had 3 of 20 quads
-// inverted to -0.75, their corners' normals up to 66 degrees apart.
+// finer edges may cure its inverted quads however many it has: a narrow fillet band
+// twisting along its length, meshed with segments several times its width, had
+// quads inverted, their corners' normals well over 45 degrees apart.
 bool has_quad_over_curvature(const FaceMeshResult& mesh) {
   if (mesh.normal.size() != mesh.boundary_nodes.size() + mesh.interior.size()) return false;
   for (const Quad& q : mesh.quads) {
@@ -77,20 +77,20 @@ constexpr std::size_t kRefinableQuads = 16;
 constexpr double kGoodEnoughCorner = 0.3;
 // The decomposition's other variants are smoothed too only where the smoothed best
 // stays under this. Smoothing them all doubled the smoothing time on parts with many
-// decomposed faces (918_pump at D/100: 0.58 -> 1.15 of the meshing; 1.00 with 0.4
-// here) for means higher by 0.003 at most on faces already fair; the worst quads it
-// is for (linkrods.step face 4 at D/50: 0.13 ranked first, 0.26 the other) are lower.
+// decomposed faces for means barely higher on faces already fair; the worst quads it
+// is for (where the variant ranked first before smoothing ends below another after
+// it) are lower.
 constexpr double kSmoothVariantsBelow = 0.25;
 // ... first with this many passes each (the smoother's default is 8), and only the
-// best of them in full: smoothing five variants of SampleCrankshaft4A.stp's face 65
-// (1,578 quads at D/100) in full took 0.75 s, 13 times its meshing.
+// best of them in full: smoothing every variant of a large decomposed face in full
+// took many times its meshing.
 constexpr SmoothingOptions kVariantLook{2};
 
 // --corners best screens its corner sets on the face's (u, v) loop, where a template
 // mesh costs microseconds, and meshes on the surface only the kSurfaceCandidates best
 // of them (fewest inverted quads, then the best worst and mean scaled Jacobian in
-// (u, v)): a set meshed on the surface took up to 0.26 s on faces 5 and 9 of
-// Zylkopf.stp, where meshing every set there made the whole run 12.8 times slower.
+// (u, v)): a set meshed on the surface costs far more, and meshing every set made
+// runs on faces with many candidate sets an order of magnitude slower.
 constexpr std::size_t kSurfaceCandidates = 4;
 
 std::vector<std::vector<int>> screened_corner_sets(const FaceBoundary& boundary,
@@ -98,7 +98,7 @@ std::vector<std::vector<int>> screened_corner_sets(const FaceBoundary& boundary,
                                                    const MeshOptions& options) {
   const Vec3 up{0, 0, signed_uv_area(boundary.uv) > 0 ? 1.0 : -1.0};
   // Without the repair of folded quads: a fold counts against the set, and repairing
-  // it took most of the screening's time (40 ms a set on Zylkopf's 90-point faces).
+  // it took most of the screening's time.
   MeshOptions screening = options;
   screening.untangle = false;
   struct Screened {
@@ -147,10 +147,10 @@ FaceMeshResult settle_natural_choice(const TopoDS_Face& face, bool seam, const s
   }
   smooth_face_mesh(face, seam, nodes, best);
   // The variants are ranked on their meshes before smoothing, which smoothing can
-  // reorder (linkrods.step face 4 at diagonal / 50: 0.26 against 0.13 smoothed, the
-  // other way round before): each is smoothed too (a quick look, then the most
-  // promising in full), and the best after smoothing kept (the worst corner, then the
-  // mean: variants differ here and there, and often share their worst quad).
+  // reorder (the variant ranked second before smoothing can end the better one after
+  // it): each is smoothed too (a quick look, then the most promising in full), and
+  // the best after smoothing kept (the worst corner, then the mean: variants differ
+  // here and there, and often share their worst quad).
   std::vector<FaceMeshResult>& others = choice.other_decompositions;
   if (best.bad == 0 && best.collapsed == 0 && best.worst_corner >= kSmoothVariantsBelow) others.clear();
   // Each looked at with a few passes, and the best of them smoothed in full.
@@ -169,8 +169,8 @@ FaceMeshResult settle_natural_choice(const TopoDS_Face& face, bool seam, const s
     smooth_face_mesh(face, seam, nodes, other);
     if (better_worst_then_mean(other, best)) best = std::move(other);
   }
-  // Ranked before smoothing, searched patches won on 918_pump_carter_sup_21_03_2006.stp
-  // at D/100 and ended lower (0.396 -> 0.345): they are judged smoothed.
+  // Ranked before smoothing, searched patches can win and then end lower once
+  // smoothed: they are judged smoothed.
   if (choice.patches_searched) {
     smooth_face_mesh(face, seam, nodes, *choice.patches_searched);
     if (better_worst_then_mean(*choice.patches_searched, best)) best = std::move(*choice.patches_searched);

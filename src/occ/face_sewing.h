@@ -4,9 +4,9 @@
 //
 // IGES files from many systems hold trimmed surfaces (type 144) with no topology
 // between them: every face comes with edges of its own. Meshed so, each face's mesh
-// ends on its own nodes and the mesh falls apart into faces (tank.brep written so by
-// OpenCASCADE: 90 unsewn pairs among 52 faces). OpenCASCADE's sewing
-// (BRepBuilderAPI_Sewing) merges such edges.
+// ends on its own nodes and the mesh falls apart into faces (even a solid written to
+// IGES by OpenCASCADE reads back with most of its shared edges unsewn). OpenCASCADE's
+// sewing (BRepBuilderAPI_Sewing) merges such edges.
 #pragma once
 
 #include <TopoDS_Shape.hxx>

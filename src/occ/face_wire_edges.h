@@ -24,8 +24,8 @@ WireEdges face_wires_with_poles(const ShapeIndex& index, int face);
 
 // face_wire_edges of each face, computed when first asked and kept: a wire explorer
 // computes the face's (u, v) bounds on cones and spline surfaces (a pass over every
-// pcurve), and the interval assignment asks three times per face and round (a fifth
-// of the main thread's work on U_Joint_2.stp at D/25). A face whose wires cannot be
+// pcurve), and the interval assignment asks three times per face and round (a large
+// share of the main thread's work on such faces). A face whose wires cannot be
 // walked throws each time it is asked, as face_wire_edges does.
 class FaceWireEdges {
  public:

@@ -32,11 +32,11 @@ namespace {
 
 // A shell (entity 514) that lost a face: as in a STEP file (step_reader.cpp), an
 // entity that does not read drops the face and the rest is transferred without it.
-// Random one-byte edits of tank.brep and the shipped bracket written as IGES by
-// OpenCASCADE did so in 2 of 80 files (a directory entry's sequence number, which
-// left 25 of tank's 52 faces out of its shell; an entity type 123 made 193): meshed
-// with exit 0 and faces missing. A face reference that does not resolve is damage in
-// any shell; a face without a shape counts in the shells that were transferred.
+// Random one-byte edits of solids written as IGES by OpenCASCADE did so (a directory
+// entry's sequence number, which left half a shell's faces out of it; a changed
+// entity type): meshed with exit 0 and faces missing. A face reference that does not
+// resolve is damage in any shell; a face without a shape counts in the shells that
+// were transferred.
 void refuse_lost_faces(IGESControl_Reader& reader, const std::string& path) {
   const Handle(Interface_InterfaceModel) model = reader.Model();
   const Handle(Transfer_TransientProcess) process = reader.WS()->TransferReader()->TransientProcess();
@@ -68,8 +68,8 @@ bool makes_faces(const Handle(Standard_Transient)& entity) {
 }
 
 // An entity that makes faces and did not read whole: OpenCASCADE transfers what it
-// can of it. Random one-byte edits of tank.brep written as IGES (40, seed 11): a face
-// whose parameters did not read gave 53 faces of 52, and a vertex list that did not
+// can of it. Random one-byte edits of a solid written as IGES: a face whose
+// parameters did not read gave one face too many, and a vertex list that did not
 // read meshed with exit 0.
 void refuse_unread_face_entities(IGESControl_Reader& reader, const std::string& path) {
   const Handle(Interface_InterfaceModel) model = reader.Model();
@@ -107,7 +107,7 @@ std::vector<std::string> unit_names(int flag) {
 }
 
 // A global section whose unit flag and unit name disagree: OpenCASCADE scales by the
-// flag alone, so one damaged digit scales the shape silently. The bracket written by
+// flag alone, so one damaged digit scales the shape silently. A part written by
 // OpenCASCADE (flag 2, "MM") with its flag made 1 came out 25.4 times too large, and
 // made 9, 1000 times too small, both meshed with exit 0 (random edits of IGES files
 // find such digits). A flag outside IGES's 1 to 11 transferred nothing.

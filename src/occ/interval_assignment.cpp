@@ -136,8 +136,8 @@ std::vector<std::pair<int, int>> facing_edges(const ShapeIndex& index, const std
 // face bounded by four edges, and the facing edges of a ring (a face of two wires of
 // as many edges, one or more each, each edge of one nearest to one of the other:
 // an annulus meshed as a mapped ring, T0 between its cuts). With equal loop totals
-// but arcs of 6 and 8 facing arcs of 7 and 7, a thin ring's mapped mesh folds
-// (SampleCrankshaft4A.stp face 103 at D/25: decomposed into 35 quads of mean 0.47).
+// but arcs of 6 and 8 facing arcs of 7 and 7, a thin ring's mapped mesh folds (and
+// the face, decomposed instead, ends with poor quads).
 void opposite_edge_pairs(FaceWireEdges& face_wires, int face, std::vector<std::pair<int, int>>& pairs) {
   const auto& wires = face_wires.of(face);
   if (!wires) return;
@@ -155,7 +155,8 @@ namespace {
 
 // The three edges of a face bounded by one wire of three edges besides degenerate
 // ones (a pole at a corner: a quarter of a disk made with its centre collapsed, as
-// tank.brep's end caps, is meshed as a triangle); nothing for other faces.
+// a cylinder's end cap split in quarters can be, is meshed as a triangle); nothing
+// for other faces.
 std::optional<std::vector<int>> three_edges(const ShapeIndex& index, int face) {
   const WireEdges wires = face_wires_with_poles(index, face);
   if (wires.size() != 1) return std::nullopt;
@@ -253,10 +254,9 @@ IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector
     balance_rings(wires, undone, goals, extents, floors, segments, units);
   }
   // Faces left odd are made even by changing whole chains (which keeps their faces
-  // mapped), a band's two long sides together (likewise: TrimmedSurface.brep's band,
-  // balanced to 26 and 26, had its longer side raised to 27 for parity, which its
-  // short end could give) or single edges; without the band pairs where that leaves
-  // a face odd.
+  // mapped), a band's two long sides together (likewise: a band balanced to equal
+  // long sides had one of them raised by one for parity, which its short end could
+  // give) or single edges; without the band pairs where that leaves a face odd.
   const std::vector<int> balanced = segments;
   try {
     make_faces_even(index, meshed, lengths, size, segments, floor, chains, band_sides);

@@ -50,8 +50,8 @@ int face_boundary_total(const ShapeIndex& index, int face, const std::vector<int
 // Raises `floor` (per edge) to kThreeCurveSideMinimum on every edge of a meshed face
 // bounded by three edges (one wire; degenerate edges, a pole at a corner, aside), so
 // such a face is three quads or more. A quarter disk with its centre collapsed and
-// counts 1, 4, 1 (tank.brep's end caps at the default size: the arc raised by its
-// neighbour) is three quads, one with a corner of 157.5 degrees on the arc (scaled
+// counts 1, 4, 1 (a cylinder's quarter end cap at the default size: the arc raised by
+// its neighbour) is three quads, one with a corner of 157.5 degrees on the arc (scaled
 // Jacobian 0.38); with 2, 4, 2 it is a 2 x 2 grid.
 void raise_three_edge_face_floors(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& floor);
 

@@ -10,8 +10,8 @@
 //
 // Only where the surface turns around the pole by kQuarterRimFrom or more: sharper
 // tips take the sector's halves (face_boundary.h, pole_sector), which need no
-// multiple of 4, and Cone_1.brep (114 degrees) lost 0.013 of its mean with its rim
-// at 32 rather than 34.
+// multiple of 4, and a cone's tip turning less than that lost mean quality with its
+// rim moved to a multiple of 4.
 #pragma once
 
 #include <cmath>

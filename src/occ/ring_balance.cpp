@@ -15,11 +15,11 @@ constexpr int kMaxSteps = 64;
 
 // Steps of equal cost (count_cost is linear away from the goals: every step below
 // them costs the same) go to the unit left nearest its goals, by the square of
-// count_cost. With the first such unit taking them all, as1-tu-203.stp's washers at
-// D/100 got outer halves of 4 and 8 segments (goals 8.9) against inner halves of 6
-// and 6, and the mapped ring between them leaned by two segments (worst quad 0.117).
-// The square alone, not as a tie-break, moved counts into other faces too (a
-// crescent of t20_data.step at D/100: mean 0.74 -> 0.26).
+// count_cost. With the first such unit taking them all, a washer's outer halves got
+// unequal counts against inner halves of equal ones, though both outer goals were
+// alike, and the mapped ring between them leaned by two segments, with a poor worst
+// quad. The square alone, not as a tie-break, moved counts into other faces too and
+// lowered their mean quality (a crescent's, for one).
 double squared_cost(int n, double goal) {
   const double relative = count_cost(n, goal);
   return relative * relative;

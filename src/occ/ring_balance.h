@@ -5,7 +5,7 @@
 // (count_fitting.h). Then the one-hole O-grid's halves, or the band, are mapped
 // grids; with unequal totals a thin ring, one or two quads across, has no room for
 // the templates' transitions and fills with quads at a straight angle (scaled
-// Jacobian 0 measured on the rings of linkrods.step).
+// Jacobian 0).
 //
 // Totals change by whole units, the chains (which keeps their faces mapped) or free
 // edges: each step takes the unit that closes the gap at the least cost

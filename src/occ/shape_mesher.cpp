@@ -302,8 +302,8 @@ class ShapeMeshContext {
     }
     // And at most about sum(E^2) / (4 pi) (a face of perimeter P has at most the area
     // P^2 / (4 pi) of a disk): when that is well under the limit, as in any ordinary
-    // run, the faces' areas (a surface integral each, a fifth of the run's time on
-    // U_Joint_2.stp) need not be computed.
+    // run, the faces' areas (a surface integral each, a large share of the run's time
+    // on parts of many curved faces) need not be computed.
     double at_most = 0;
     for (int f = 0; f < index_.face_count(); ++f) {
       if (!to_mesh_[f]) continue;
@@ -336,8 +336,8 @@ class ShapeMeshContext {
   // Stage "mesh faces": each face by its route (face_route.h), in parallel; progress
   // counts faces done, and a cancel stops the workers before their next face.
   void mesh_faces() {
-    // In a refinement round, a face whose edges did not change keeps its mesh: the
-    // rounds meshed every face again (U_Joint_2.stp: three rounds, all 133 faces).
+    // In a refinement round, a face whose edges did not change keeps its mesh: each
+    // round would otherwise mesh every face again.
     std::vector<FaceOutcome> previous = std::move(outcomes_);
     previous.resize(index_.face_count());
     outcomes_.assign(index_.face_count(), FaceOutcome{});

@@ -51,10 +51,10 @@ std::string entity_label(const Handle(Interface_InterfaceModel)& model, const Ha
 // A shell that came through the transfer but lost a face: an entity of the file that
 // does not read (a damaged type name, a reference to the wrong entity, a broken line)
 // drops that face, and OpenCASCADE transfers the rest without it. Random one-byte
-// edits of the parts in ../shared/data/cad dropped a face in 16 of 360 edited STEP
-// files, which were then meshed with a hole and exit 0; no shell of the unedited
-// files lost one. Faces are checked in the shells that were transferred only, so
-// representations the transfer does not reach stay out of it.
+// edits of STEP files dropped a face in some of them, which were then meshed with a
+// hole and exit 0; no shell of the unedited files lost one. Faces are checked in the
+// shells that were transferred only, so representations the transfer does not reach
+// stay out of it.
 void refuse_lost_faces(STEPControl_Reader& reader, const std::string& path) {
   const Handle(Interface_InterfaceModel) model = reader.Model();
   const Handle(Transfer_TransientProcess) process = reader.WS()->TransferReader()->TransientProcess();
@@ -145,10 +145,10 @@ bool harmless_failure(const std::string& failure) {
 
 // An entity of the shape that did not read whole (one of its references names an
 // entity of the wrong type or none, a value does not parse): OpenCASCADE transfers
-// the file without what the entity holds. A damaged CLOSED_SHELL line of one of the
-// five bodies of as1-tu-203.stp left the shell unread, its MANIFOLD_SOLID_BREP
-// without its outer shell, and the part was meshed as four bodies with exit 0; the
-// shells that did come through (refuse_lost_faces) had lost nothing.
+// the file without what the entity holds. A damaged CLOSED_SHELL line of one of a
+// part's bodies left the shell unread, its MANIFOLD_SOLID_BREP without its outer
+// shell, and the part was meshed with one body fewer and exit 0; the shells that
+// did come through (refuse_lost_faces) had lost nothing.
 void refuse_unread_shape_entities(STEPControl_Reader& reader, const std::string& path,
                                   std::vector<std::string>* warnings) {
   const Handle(Interface_InterfaceModel) model = reader.Model();
@@ -180,10 +180,10 @@ void refuse_unread_shape_entities(STEPControl_Reader& reader, const std::string&
 // a reference to an entity the file does not hold, or two entities of one number.
 // Random edits of the parts did so (a line cut to "#2815=ORIENTED_6,.F.);" left an
 // edge loop one edge short, with no failure of its own), and OpenCASCADE transferred
-// the rest: 918_pump_carter_sup_21_03_2006.stp came out with its faces all there but
-// twice as large, a face healed past its missing edge. The parser's other global
-// failures are the header's (a FILE_NAME with 6 parameters of 7), which change
-// nothing in the shape. The three are told apart by OpenCASCADE's fixed texts.
+// the rest: a part came out with its faces all there but twice as large, a face
+// healed past its missing edge. The parser's other global failures are the
+// header's (a FILE_NAME with 6 parameters of 7), which change nothing in the shape.
+// The three are told apart by OpenCASCADE's fixed texts.
 bool drops_data(const std::string& failure) {
   for (const char* start : {"Undefined Parsing", "Unresolved Reference", "Ident defined SEVERAL TIMES"}) {
     if (failure.rfind(start, 0) == 0) return true;

@@ -16,7 +16,7 @@ namespace {
 
 // A copy of `mesh` without its per-quad and per-node arrays (quads, interior nodes,
 // and what check_on_surface measures), which the caller fills: copying them whole
-// took most of the smoothing's time on faces where few nodes move (Cone_1.brep).
+// took most of the smoothing's time on faces where few nodes move.
 // The arrays are moved out for the copy and back, so `source` ends as it was.
 FaceMeshResult without_nodes_and_quads(FaceMeshResult& source) {
   std::vector<Quad> quads = std::move(source.quads);
@@ -35,10 +35,9 @@ FaceMeshResult without_nodes_and_quads(FaceMeshResult& source) {
 // A mesh with its layout changed around boundary corners (flat corners turned, sharp
 // ones flipped) replaces the best so far only for a clear gain: a
 // worst corner better by kTurnGain (or, below that, doubled), or as good and a better
-// mean. A turn changes the layout around the node; on two faces of Zylkopf.stp at
-// D/25 it raised the worst corner by 0.01-0.02 and lowered the mean by 0.02-0.05,
-// while the flat corners it is made for gain far more (0.014 -> 0.47 on that part at
-// D/50, 0.011 -> 0.052 on part.step at D/50).
+// mean. A turn changes the layout around the node; elsewhere it can raise the worst
+// corner a little and lower the mean more, while the flat corners it is made for gain
+// far more (a near-straight corner's scaled Jacobian raised several times over).
 constexpr double kTurnGain = 0.05;
 bool turned_is_better(const FaceMeshResult& turned, const FaceMeshResult& incumbent) {
   if (turned.bad != incumbent.bad || turned.inverted != incumbent.inverted || turned.collapsed != incumbent.collapsed) {
@@ -51,13 +50,12 @@ bool turned_is_better(const FaceMeshResult& turned, const FaceMeshResult& incumb
 }
 
 // A changed layout's smoothing moves the nodes of its changed quads and this many
-// rings of nodes around them: tank.brep's worst quad at D/50 0.416 with 2 rings,
-// 0.454 with 3 and 5 (0.528, 0.537, 0.572 at D/100; the smoothing's time alike
-// within the runs' noise).
+// rings of nodes around them: 3 rings gave a better worst quad than 2, and 5 little
+// or nothing more than 3, at about the same smoothing time.
 constexpr int kChangeRings = 3;
 
-// The surface normals (of any length: a B-spline face's derivatives' cross product,
-// hundreds long on capot.brep) at unit length, zero where singular, as the layout
+// The surface normals (of any length: a B-spline face's derivatives' cross product
+// can be hundreds long) at unit length, zero where singular, as the layout
 // changes' corner measures want them.
 std::vector<Vec3> unit_normals(const std::vector<Vec3>& normal) {
   std::vector<Vec3> unit;
@@ -97,8 +95,8 @@ void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<
   if ((mesh.used_projection && has_seam) || mesh.interior.empty()) return;
   // Every corner already at good_enough: smooth_mesh would move no node (it starts
   // from the nodes with a corner under it), and there is no doublet (a doublet's
-  // node has a corner of 180 degrees or more). Measured: each mapped face of 3,364
-  // quads of box.brep at D/100 spent about 12 ms here for nothing.
+  // node has a corner of 180 degrees or more). Without this return, large mapped
+  // faces with every corner good spent time here for nothing.
   if (mesh.worst_corner >= options.good_enough) return;
   const std::size_t fixed = mesh.boundary_nodes.size();
   if (mesh.param.size() != fixed + mesh.interior.size()) return;  // not measured on the surface
@@ -155,7 +153,7 @@ void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<
   std::optional<FaceMeshResult> best;
   // With every doublet merged (the second round), only the unchanged layout and the
   // changed one kept in the first round, if any, are tried again: trying them all
-  // again doubled the smoothing of SampleCrankshaft4A.stp's decomposed faces.
+  // again doubled the smoothing time of decomposed faces.
   std::size_t kept_layout = 0;
   for (bool even_if_worse : {false, true}) {
     int refused_any = 0;

@@ -1,9 +1,9 @@
 // unsewn_edge_pairs: where a file's faces touch without sharing their edge.
 //
 // A STEP file may hold faces that meet along a curve but each with an edge of its own
-// there (the faces were not sewn; cube_filet.stp has 48 such pairs). Each face is
-// then meshed on its own edge, so the two meshes meet without sharing nodes: the mesh
-// has a crack there that a solver sees as a free boundary. Such pairs are found here
+// there (the faces were not sewn). Each face is then meshed on its own edge, so the
+// two meshes meet without sharing nodes: the mesh has a crack there that a solver
+// sees as a free boundary. Such pairs are found here
 // and reported (a warning and the report's `unsewn_edge_pairs`), never silently.
 #pragma once
 
