@@ -5,9 +5,8 @@
 // (cad_input.cpp), loaded from <the program's folder>/../lib/templatequad/ only for a
 // CAD input (cad_input_loader.cpp). Debian links OpenCASCADE's libraries to bind
 // every symbol when they are loaded: a boundary file is meshed without that start
-// (62 ms and 23 MB: an empty program linking them all against one linking none, on the
-// 2-core machine beside a fuzzing run), and a BREP file without the STEP and IGES
-// readers' (occ/exchange_reader.h).
+// (binding them all costs a program noticeable time and memory before it does
+// anything), and a BREP file without the STEP and IGES readers' (occ/exchange_reader.h).
 #pragma once
 
 #include <ostream>

@@ -150,10 +150,10 @@ int run_cli(int argc, char** argv) {
 // may back by 2 MB pages (transparent huge pages, where the system leaves them to
 // madvise, as Debian does) and that is never given back. A million-quad mesh's
 // arrays are otherwise fresh 4 KB pages each time, and on a virtual machine each
-// first touch is a trap: the 1.5 M-quad rectangle (counts 1000, 1100, 1200, 1300)
-// took 25,000 page faults and 1.23 s, with this about 1,300 and 0.85 s, at a peak
-// 4 MB higher (119 to 123 MB). The heap is grown once by kHeapReserve, untouched (no memory used until
-// written), and advised; past it, it grows in 4 KB pages as before.
+// first touch is a trap: on large meshes those page faults took a large share of the
+// run's time, which this saves for a slightly higher peak memory. The heap is grown
+// once by kHeapReserve, untouched (no memory used until written), and advised; past
+// it, it grows in 4 KB pages as before.
 // Not under AddressSanitizer (its allocator is its own, and the reserve would cost its
 // shadow memory), nor where the system commits memory strictly (the reserve would
 // count against the limit).

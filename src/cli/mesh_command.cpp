@@ -232,8 +232,8 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
         << " quads are inverted (negative scaled Jacobian)\n";
   }
   // As unfit for analysis as an inverted quad, and as easy to miss in a histogram:
-  // a boundary point 1.2e8 above a unit circle (fuzzed) gave 54 quads, all of them
-  // so, with exit 0 and nothing said.
+  // a boundary point far off a unit circle (fuzzed) gave a mesh of such quads only,
+  // with exit 0 and nothing said.
   if (quality.degenerate > 0) {
     err << "tquad: warning: " << quality.degenerate << " of " << shape.quads.size()
         << " quads are degenerate (a corner's scaled Jacobian within 1e-6 of 0: an angle of 0 or 180 degrees)\n";

@@ -9,10 +9,10 @@
 // search runs too and its mesh is kept if it has fewer inverted quads: a valid mesh
 // with other corners serves a user better than a folded one with theirs; then, for
 // a planar loop, the face decomposition (planar_loop_decomposition.h), kept on the
-// same terms. Measured on the generated property cases: of the 12 of 12,000
-// boundaries whose smoothed mesh kept an inverted quad (5 mildly non-convex, 7
-// curved), 10 have none with the searched corners, and the two left (cases 5311 and
-// 1555, triangles with a cusp) none with the decomposition.
+// same terms. On the generated property cases, most of the few boundaries whose
+// smoothed mesh kept an inverted quad (mildly non-convex or curved) have none with
+// the searched corners, and those left (triangles with a cusp) none with the
+// decomposition.
 #pragma once
 
 #include <map>

@@ -20,7 +20,7 @@ CurveGeometry::CurveGeometry(const std::vector<NodeId>& ids, const std::vector<V
 
 Vec3 CurveGeometry::at(double t) const {
   // Written so that a NaN t (from a degenerate patch map) gives the first point
-  // rather than an index past the end (fuzz_boundary found one, 2026-12-03).
+  // rather than an index past the end (fuzz_boundary found such a t).
   if (!(t > 0.0)) return points_.front();
   if (!(t < 1.0)) return points_.back();
   const auto it = std::upper_bound(params_.begin(), params_.end(), t);

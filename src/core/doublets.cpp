@@ -64,8 +64,8 @@ int merge_doublets(std::vector<Quad>& quads, int fixed, const std::vector<Vec3>&
 }  // namespace
 
 // One pass over the quads spares the sweeps' adjacency lists where there is no
-// doublet (with the mesh copy smooth_mesh_in_plane no longer makes, 0.55 s of a
-// 1.5 M-quad rectangle's 1.5 s smoothing).
+// doublet (with the mesh copy smooth_mesh_in_plane no longer makes, those lists were
+// a large share of the smoothing's time on large meshes).
 bool has_doublet(const std::vector<Quad>& quads, int fixed, std::size_t nodes) {
   std::vector<unsigned char> quads_at(nodes, 0);
   for (const Quad& q : quads) {

@@ -127,8 +127,8 @@ struct DecompositionOptions {
   // A boundary point turning inwards (a reflex point) by at least this many degrees
   // is a coarse vertex, CAD vertex or not. 60, as for any point, on faces: 20 there
   // gave worse worst quads. The boundary route's fallback
-  // (planar_loop_decomposition.h) takes 20: a side bent inwards by 21 degrees next to
-  // a cusp folded the one patch it left (generated case 1555).
+  // (planar_loop_decomposition.h) takes 20: a side bent inwards by a little more than
+  // that next to a cusp otherwise stays inside one patch, which the templates fold.
   double reflex_point_turn = 60.0;
 };
 

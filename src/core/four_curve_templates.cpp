@@ -35,9 +35,9 @@ struct FourCurves {
 // middle column has C + b (C below P1, b in the A x b block), so P1 sits at
 // v1 = C / (C + b): eq. 3's v1 = d1 / (d1 + d4) with both lengths measured in edges
 // of the side's own size. Measuring d1 along the long side instead (the b edges of
-// s0) put P1 too high: on the 2,000 convex four-curve property cases it left 171
-// meshes with an inverted quad before repair, against none with v1 = C / (C + b),
-// which also raised the mean worst scaled Jacobian from 0.28 to 0.33.
+// s0) put P1 too high: on the convex four-curve property cases it left many meshes
+// with an inverted quad before repair, against none with v1 = C / (C + b), which
+// also raised the mean worst scaled Jacobian.
 std::vector<Region> split_t1(const Region& r, MeshBuilder& builder) {
   const auto counts = r.counts();
   const int B = counts[0], A = counts[2], b = tquad::split_t1(counts).b;

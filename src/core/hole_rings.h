@@ -2,9 +2,9 @@
 //
 // A hole's rim is where a part's stress peaks (a bolt hole, a cutout), and where the
 // decomposition's cuts end: the templates' transitions (a fan of quads at a patch
-// corner) would sit on the rim, at the peak. Measured on a 100 x 60 plate with a
-// 20 mm hole in tension (tests/freecad/test_fem_plate.py), a fan at the rim put
-// CalculiX's stress concentration factor 18% above Heywood's. So each hole first gets
+// corner) would sit on the rim, at the peak. In a plate with a hole in tension
+// (tests/freecad/test_fem_plate.py), a fan at the rim put CalculiX's stress
+// concentration factor well above Heywood's. So each hole first gets
 // `layers` rings of quads, one per rim segment, each ring as thick as the rim's local
 // spacing (square quads), as FEM practice meshes a washer zone; the rest of the domain
 // (the outer loop and the rings' outer loops as holes) is then decomposed as usual,

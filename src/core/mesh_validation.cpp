@@ -40,10 +40,10 @@ bool is_boundary_segment(NodeId a, NodeId b, const std::vector<int>& start) {
 std::string edge_name(NodeId a, NodeId b) { return std::to_string(a) + "-" + std::to_string(b); }
 
 // Linear in the mesh's size: sorting every directed edge, as this did before, took
-// 1.0 s of the 1.4 s check of a 1.5 M-quad rectangle (counts 1000, 1100, 1200, 1300),
-// and the boundary route checks twice. Each quad side is listed at its lower node
-// with the other node and its direction, (other << 1) | (runs from the higher node),
-// so a node's short list holds every side between it and a higher neighbour.
+// most of the check's time on large meshes, and the boundary route checks twice. Each
+// quad side is listed at its lower node with the other node and its direction,
+// (other << 1) | (runs from the higher node), so a node's short list holds every side
+// between it and a higher neighbour.
 std::string check_edges(const QuadMesh& mesh, const std::vector<int>& start) {
   const int boundary_points = start.back();
   const SlottedLists sides = SlottedLists::build(mesh.nodes.size(), [&](auto add) {
@@ -112,12 +112,12 @@ std::string check_nodes(const QuadMesh& mesh) {
     if (!used[i]) return "node " + std::to_string(i) + " belongs to no quad";
   }
   // Coincident nodes by an open-addressing hash table of node indices + 1 (0: empty),
-  // at most half full: linear, where sorting the positions took 0.4 s of 1.5 M nodes.
+  // at most half full: linear, where sorting the positions was slow on large meshes.
   std::size_t size = 2;
   while (size < 2 * mesh.nodes.size()) size *= 2;
   std::vector<NodeId> slots(size, 0);
   // Each node's first slot is a cache miss of a table larger than the caches: it is
-  // asked for kAhead nodes early (0.06 s of the 1.52 M-quad rectangle's check before).
+  // asked for kAhead nodes early (the misses were a visible part of the check before).
   constexpr NodeId kAhead = 16;
   const auto count = static_cast<NodeId>(mesh.nodes.size());
   std::array<std::size_t, kAhead> first_slot{};

@@ -51,8 +51,7 @@ inline CompressedLists quads_around_nodes(std::size_t nodes, const std::vector<Q
 // where it holds fewer) and, for a node with more, the rest in a list sorted by node.
 // A node of a quad mesh mostly has four quads and is the lower end of four quad
 // sides: for such lists this takes 16 bytes a node where CompressedLists takes 16 a
-// quad and 4 a node, 6 MB less at the smoother's and the mesh check's peaks on the
-// 1.52 M-quad rectangle.
+// quad and 4 a node, less at the smoother's and the mesh check's peaks on large meshes.
 class SlottedLists {
  public:
   // add_pairs(add) calls add(node, item) for every pair, item >= 0, once.

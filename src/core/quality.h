@@ -54,7 +54,7 @@ inline QuadCorners quad_corners(const Quad& quad, const std::vector<Vec3>& posit
 // quad_corners of a quad in the z = 0 plane, every corner signed by +z: only the z
 // components of the cross products are computed. The same values (zeros' signs aside;
 // a test compares the two), for the smoother of planar regions, where quad_corners
-// took 18% of the boundary route's profile on a 1.5 M-quad rectangle (perf).
+// took a large share of the boundary route's time on large meshes.
 QuadCorners planar_quad_corners(const std::array<Vec3, 4>& quad);
 
 struct QualityStats {
@@ -116,7 +116,7 @@ QualitySummary summarize_quality(const std::vector<Vec3>& nodes, const std::vect
 // Lee-Lo, the scaled Jacobian and is_collapsed of one quad, signed by `normal` (any
 // length), from one pass over its edges: the same values, bit for bit, as
 // lee_lo_quality, scaled_jacobian and is_collapsed, which measure each side two or
-// three times (a 1.5 M-quad mesh's quality took 0.13 s so).
+// three times (a cost that shows in the quality stage of large meshes).
 struct QuadQuality {
   double lee_lo = 0, scaled_jacobian = 0;
   bool collapsed = false;

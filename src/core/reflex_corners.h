@@ -1,7 +1,7 @@
 // split_reflex_corner_quads: a boundary point where a planar region turns reflex (an
 // interior angle over 180 degrees) and that is the corner of one quad only leaves that
 // quad inverted whatever its interior nodes do: its corner there is the region's
-// reflex angle. (5 of the 7 mildly non-convex generated boundaries that stayed
+// reflex angle. (Most of the mildly non-convex generated boundaries that stayed
 // inverted after smoothing were such.) Each such quad is replaced by five, an inner
 // quad and four around it, so the reflex point becomes the corner of two quads; the
 // four new nodes start a third of the way from each corner to the quad's centre and

@@ -34,9 +34,8 @@ constexpr int kAscentIterations = 8;
 constexpr int kSumAscentIterations = 2;
 
 // The compass search's eight directions (unit length, along the mesh coordinates;
-// in each node's local frame instead, 7 rather than 5 of the 3,000 mildly non-convex
-// generated boundaries kept an inverted quad), and how many moves it takes at one
-// step size.
+// in each node's local frame instead, more of the mildly non-convex generated
+// boundaries kept an inverted quad), and how many moves it takes at one step size.
 constexpr double kHalfSqrt2 = 0.70710678118654752440;
 const std::array<Vec3, 8> kCompass = {Vec3{1, 0, 0},   Vec3{kHalfSqrt2, kHalfSqrt2, 0},
                                       Vec3{0, 1, 0},   Vec3{-kHalfSqrt2, kHalfSqrt2, 0},
@@ -47,8 +46,8 @@ constexpr int kStepsPerSize = 4;
 // A move must raise the worst corner around the node by kWorstGain of its value (at
 // least of kWorstGainFloor), or keep it and raise the sum of the corners there (up to
 // 12) by kSumGain: smaller gains cost passes and change nothing one sees. With any
-// gain counted, the Laplacian moves rippled through whole O-grid disks (a third of a
-// fine disk's nodes moving in every pass); a relative gain stops that (the smoothing
+// gain counted, the Laplacian moves rippled through whole O-grid disks (a large share
+// of a fine disk's nodes moving in every pass); a relative gain stops that (the smoothing
 // then costs less than the meshing) yet lets sliver quads (scaled Jacobian ~0.02)
 // keep climbing by small steps. Against any gain counted, it leaves the worst quads
 // and the means of CAD parts about as they were, some a little lower, some higher.
@@ -152,9 +151,9 @@ class SurfaceNodes {
 // The nodes of a planar mesh in its plane's frame (x, y, 0): each node's mesh
 // coordinates are its position, and the normal is +z everywhere. The same values as
 // SurfaceNodes given those (the same smoothed mesh, bit for bit: a test), corners by
-// planar_quad_corners, in one array instead of four: on a 1.5 M-quad rectangle
-// (counts 1000, 1100, 1200, 1300) the copies cost 110 MB and a fifth of the
-// smoothing's time, most of it the kernel handing out their pages.
+// planar_quad_corners, in one array instead of four: on large meshes the copies cost
+// much memory and a sizeable share of the smoothing's time, most of it the kernel
+// handing out their pages.
 class PlanarNodes {
  public:
   explicit PlanarNodes(std::vector<Vec3>& nodes) : nodes_(nodes) {}
@@ -219,7 +218,7 @@ int inverted_corners(const QuadCorners& c) {
 // is decided by its own node and its two neighbours in the quad), and the corners
 // inverted (inverted_corners).
 struct CornerScan {
-  std::vector<bool> deciding;  // bits: a byte a node was 1.5 MB of the 1.5 M-quad rectangle's peak
+  std::vector<bool> deciding;  // bits: a byte a node added to the peak memory of large meshes
   long long inverted = 0;
 };
 template <typename Nodes>
@@ -280,8 +279,8 @@ class Smoother {
           moved = ascend_corner_sum(n, here) || moved;
         }
         // Where a corner is still inverted, also the compass search: across a fold
-        // the finite differences mislead the ascent. Measured on the 3,000 mildly
-        // non-convex generated boundaries: 6 keep an inverted quad without it, 5 with.
+        // the finite differences mislead the ascent. On the mildly non-convex
+        // generated boundaries it leaves fewer inverted quads than the ascent alone.
         // So too around a collapsed quad (an edge under kCollapsedEdgeRatio of its
         // longest, next to a tiny CAD edge): its corners may be fine, and nothing
         // but the edge ratio says which way to go. Without it such quads next to tiny
@@ -474,11 +473,10 @@ class Smoother {
       const double rate = std::hypot(along_first, along_second);  // the sum's gain per unit step
       if (!(rate > 0)) return std::nullopt;
       // Steps whose predicted gain is under kSumGain would not be kept (to first
-      // order), so none is tried. Measured on a 1.5 M-quad rectangle (counts 1000,
-      // 1100, 1200, 1300): with the sum's plain gradient 99% of these ascents failed
-      // (it lowered a corner at the worst), spending 0.76 M of the smoothing's
-      // 1.17 M node placements; projected and cut short so, 0.29 M, and twice as
-      // many moves kept. On the 16 parts means rise by up to 0.005.
+      // order), so none is tried. With the sum's plain gradient nearly all of these
+      // ascents failed (it lowered a corner at the worst), spending most of the
+      // smoothing's node placements; projected and cut short so, they spend far fewer
+      // and keep more moves, and the means of CAD parts rise a little.
       const double first_step = kLargestStep * shortest;
       if (first_step * rate < kSumGain) return std::nullopt;
       return AscentStep{along_first / rate, along_second / rate, first_step, kSumGain / rate};
@@ -548,8 +546,8 @@ class Smoother {
 
   // Calls visit(neighbour) for each edge neighbour of node n, in the same order every
   // time: the corner after n in each quad around it, so an interior node's
-  // neighbours once each. (A list of them would cost 20 bytes a node more: 30 MB on
-  // a 1.5 M-quad rectangle.)
+  // neighbours once each. (A list of them would cost 20 bytes a node more, much memory
+  // on large meshes.)
   template <typename Visit>
   void for_each_neighbour(int n, const Visit& visit) const {
     quads_of_.for_each(n, [&](int k) {
@@ -706,8 +704,8 @@ SmoothingResult smooth_mesh_in_plane(QuadMesh& mesh, int fixed, const Vec3& norm
   merged = 0;
   if (fixed <= 0 || fixed >= static_cast<int>(mesh.nodes.size())) return {};
   // A right-handed frame (e1, e2, normal) at the first boundary node; the nodes are
-  // taken into it in place (a copy cost 36 MB and 0.1 s of a 1.5 M-quad rectangle,
-  // most of it the kernel handing out its pages) and the boundary's saved apart.
+  // taken into it in place (a copy costs much memory and time on large meshes, most
+  // of it the kernel handing out its pages) and the boundary's saved apart.
   const MeanPlane plane = MeanPlane::with_normal(mesh.nodes[0], normal);
   const std::vector<Vec3> boundary(mesh.nodes.begin(), mesh.nodes.begin() + fixed);
   for (Vec3& p : mesh.nodes) {
@@ -765,8 +763,8 @@ std::optional<QuadMesh> smoothed_on(const QuadMesh& mesh, int fixed, CurvedLoopM
 
 // A curved loop's mesh smoothed: on the templates' own surface, fitted around each
 // node (fitted_surface.h); where that leaves an inverted quad (the templates' surface
-// folds there: of the 3,000 curved generated boundaries, 10 kept one, with worst
-// corners to -0.65), also on the mean value membrane through the loop
+// folds there: a few of the curved generated boundaries kept one, some with a corner
+// far below zero), also on the mean value membrane through the loop
 // (mean_value_surface.h). The mesh with the highest worst corner in its quads' own
 // planes is kept, the unsmoothed one included: smooth_mesh keeps the worst corner as
 // it judges corners (against the surface normals and in each quad's plane), which is

@@ -105,8 +105,8 @@ T3Split split_t3(const CurveCounts& n) {
   // (opposite line 1). The excess goes whole to one of them, which becomes a T1, as in
   // Table 1 ("T3, T1 (bottom-right region)"); it goes to the region with the longer
   // opposite line, where the T1's stretch is milder. (Giving it always to V0, always
-  // to V1, or half to each when both halves stay even changed the number of
-  // three-curve property cases with an inverted quad before repair by under 2%.)
+  // to V1, or half to each when both halves stay even barely changed the number of
+  // three-curve property cases with an inverted quad before repair.)
   const int first_part_s0 = lines[2] + (lines[2] > lines[1] ? excess : 0);
   return {lines, {first_part_s0, lines[0], lines[1]}};
 }

@@ -44,8 +44,7 @@ ArrayBlock stored_block(std::string type, std::string name, int components, cons
 
 // A block of `count` values of type T, value(i) each, derived from the mesh as it is
 // written through a small buffer, never held whole: a million-quad mesh's offsets,
-// types and face numbers took 13 bytes a quad at the writer's peak (20 MB of the
-// 1.5 M-quad rectangle's 127 MB).
+// types and face numbers took 13 bytes a quad at the writer's peak.
 template <typename T, typename Value>
 ArrayBlock generated_block(std::string type, std::string name, int components, std::size_t count, Value value) {
   return {std::move(type), std::move(name), components, count * sizeof(T), [count, value](std::ostream& out) {

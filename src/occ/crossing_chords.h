@@ -5,11 +5,11 @@
 // passes within that of it (a notch cut almost to an arc's top, a hole near a
 // fillet), the loop of segments crosses itself although the face's edges do not,
 // and every route refuses the face ("the boundary crosses or touches itself"). Finer
-// segments on the curved edge cure it: on a generated part a notch came within 0.07
-// of an arc of radius 9.6 cut in 11 segments (sagitta 0.2), and 22 clear it. Two
-// lines on a plane are their own chords: a crossing of theirs is the face's own and
-// no count cures it; nor does any count part two segments meeting at one node (a hole
-// touching the outer loop at a vertex).
+// segments on the curved edge cure it: a notch closer to an arc than its chords'
+// sagitta is cleared once the arc has enough segments for their sagitta to fall under
+// the gap. Two lines on a plane are their own chords: a crossing of theirs is the
+// face's own and no count cures it; nor does any count part two segments meeting at
+// one node (a hole touching the outer loop at a vertex).
 #pragma once
 
 #include <vector>

@@ -8,11 +8,10 @@
 //                                     tquad_step.so or tquad_iges.so beside the calling
 //                                     module (the command's CAD layer).
 // Debian links OpenCASCADE's libraries to bind every symbol when they are loaded; the
-// STEP and IGES toolkits are half of what the command's CAD layer loads, 36 ms of its
-// start and 12 MB of memory (measured: a program linking them against one linking the
-// modeling toolkits alone; the IGES toolkits and what they pull in, 12 of those ms),
-// so the command loads them only for a STEP or IGES file, each format's alone, in the
-// reader's child process (isolated_reader.h).
+// STEP and IGES toolkits are a large part of what the command's CAD layer loads, of its
+// start time and of its memory (the IGES toolkits, with what they pull in, a good part
+// of that), so the command loads them only for a STEP or IGES file, each format's
+// alone, in the reader's child process (isolated_reader.h).
 #pragma once
 
 #include <TopoDS_Shape.hxx>

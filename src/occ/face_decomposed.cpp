@@ -160,8 +160,8 @@ class FaceChart {
   // Per cut of `decomposition`, the fewest segments that stand for its turning on the
   // surface (segments_for_turn, as edges get): a cut is straight in the chart, not in
   // space. A torus groove of a shaft cut by a milled flat had cuts across its tube
-  // (up to a half circle, 3.3 long) of 1 or 2 segments at size 3.07, where edges of
-  // that turn get 4, and 8 of its 96 quads stayed inverted.
+  // (up to a half circle) of fewer segments than edges of that turn get, and some of
+  // its quads stayed inverted.
   // None on a plane. The face's decompositions share most cuts: each is measured once.
   std::vector<int> cut_turn_minimums(const FaceDecomposition& decomposition) const {
     if (surface_.GetType() == GeomAbs_Plane) return {};

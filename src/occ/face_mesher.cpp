@@ -120,8 +120,7 @@ std::vector<Vec3> loop_in_space(const FaceBoundary& b, const std::vector<Vec3>& 
 // Newell normal, turns the other way around the face's outer normal: the outer
 // normals along the loop, summed (zero where singular), against that normal. The
 // first node's alone was wrong where it is a pole: a fillet's B-spline closing on a
-// point has du x dv zero there, and its mesh came out inverted (42 of 46 quads on a
-// generated part).
+// point has du x dv zero there, and its mesh came out almost wholly inverted.
 bool reversed_against_rim(const TopoDS_Face& face, const FaceBoundary& b, const std::vector<Vec3>& loop) {
   const BRepAdaptor_Surface surface(face);
   const bool reversed = face.Orientation() == TopAbs_REVERSED;

@@ -61,8 +61,8 @@ void raise_three_edge_face_floors(const ShapeIndex& index, const std::vector<cha
 // loop's quad lies in the middle of the line (180 degrees: a D of 2 and 2 was one
 // degenerate quad). Two shallow arcs, as a boolean leaves between two overlapping
 // holes or a hole and a fillet, are otherwise one segment each at a size larger than
-// them, and a face (or hole) of 2 segments cannot be meshed: such a lens, 1.2 long at
-// size 2.4 on a generated part, was refused.
+// them, and a face (or hole) of 2 segments cannot be meshed: such a lens, shorter
+// than the size, was refused.
 void raise_two_edge_loop_floors(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& floor);
 
 // The whole shape's edge counts chosen together: opposite edges of every face bounded

@@ -54,10 +54,10 @@ constexpr bool kLimitAddressSpace = true;
   // write a crash report) must not run on the reader's state.
   for (const int fatal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) signal(fatal, SIG_DFL);
   // Nor may its crash be dumped: the child's pipe closes only after the dump, and
-  // where the system pipes dumps to a collector the parent waits for it. A CI run
-  // reported this crash, read from Python, as a 300 s read timeout; here a collector
-  // that slept 15 s before reading delayed the reply by 15 s. A process that is not
-  // dumpable is never dumped (and leaves no core file).
+  // where the system pipes dumps to a collector the parent waits for it: a slow
+  // collector delays the reply by as long as it takes, and a crash can come back as
+  // the caller's read timeout instead. A process that is not dumpable is never dumped
+  // (and leaves no core file).
   prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
   const rlimit no_core{0, 0};
   setrlimit(RLIMIT_CORE, &no_core);

@@ -69,7 +69,7 @@ ReadShape read_brep_text_isolated(const std::string& brep, const ReadLimits& lim
 // The two halves of the above, for a caller that has the reading done by another process
 // than the one meshing: the fuzz targets fork their readers from a small server process
 // (fuzz/reader_server.h), since forking the large fuzzing process, and the reader's exit
-// from its copy, took half of each run. The reply is the reader process's bytes when it
+// from its copy, took much of each run. The reply is the reader process's bytes when it
 // read a shape (anything else throws as read_shape_isolated does); decode_shape_reply
 // turns them into the shape (std::logic_error for bytes that are no such reply).
 std::string read_shape_reply(const std::string& path, const ReadLimits& limits);
