@@ -35,7 +35,7 @@ class Mesh:
 
 def mesh_boundary(points: Union[np.ndarray, Sequence[Sequence[float]]], corners: Sequence[int], *,
                   t4_ratio: int = ..., t5_cut_edges: int = ..., max_quads: int = ...,
-                  smooth: bool = ...) -> Mesh: ...
+                  smooth: bool = ..., best_corners: bool = ...) -> Mesh: ...
 
 def mesh_shape(brep_text_or_path: str, *, size: float = ..., faces: Optional[Iterable[int]] = ...,
                corners: Optional[Mapping[int, Sequence[int]]] = ..., keep_going: bool = ...,
@@ -43,4 +43,4 @@ def mesh_shape(brep_text_or_path: str, *, size: float = ..., faces: Optional[Ite
                t5_cut_edges: int = ..., max_quads: int = ..., smooth: bool = ...,
                progress: Optional[Callable[[str, int, int], Optional[bool]]] = ...,
                read_timeout: Optional[float] = ..., best_corners: bool = ...,
-               min_size: float = ..., order: int = ...) -> Mesh: ...
+               min_size: float = ..., order: int = ..., sew: bool = ...) -> Mesh: ...
