@@ -222,6 +222,24 @@ class MeshObjectTest(unittest.TestCase):
             outward = (a + b + c + d) * 0.25 - centre
             self.assertGreater(normal.dot(outward), 0, f"element {element} faces inwards")
 
+    def test_every_mesh_shape_keyword_is_a_property_or_named_as_not_offered(self):
+        """One table maps the module's options to the object's properties: a keyword
+        added to tquad.mesh_shape and not to the table, or a property the object lacks,
+        fails here."""
+        import inspect
+        from freecad.templatequad import make_mesh, mesh_object
+        keywords = set(inspect.signature(_tquad().mesh_shape).parameters)
+        offered, not_offered = set(mesh_object.OPTION_PROPERTIES), set(mesh_object.OPTIONS_NOT_OFFERED)
+        self.assertFalse(offered & not_offered, "a keyword both offered and not")
+        self.assertEqual(offered | not_offered, keywords, "keywords of tquad.mesh_shape not in the table")
+        mesh = make_mesh(self.doc, self._part(Part.makeBox(10, 10, 10), "OptionsBox"), size=5.0)
+        for keyword, (name, _) in mesh_object.OPTION_PROPERTIES.items():
+            self.assertIn(name, mesh.PropertiesList, f"the property for {keyword}")
+        mesh.Sew, mesh.ElementOrder, mesh.Corners = True, "2nd", ["Face1:Vertex1,Vertex3,Vertex7,Vertex5"]
+        options = mesh_object.mesh_options(mesh)
+        self.assertEqual((options["size"], options["sew"], options["order"]), (5.0, True, 2))
+        self.assertEqual(options["corners"], {0: [0, 2, 6, 4]})
+
     def test_smooth_and_best_corners_reach_tquad(self):
         from freecad.templatequad import make_mesh
         part = self._part(self._filleted_box(), "FilletedBoxOptions")

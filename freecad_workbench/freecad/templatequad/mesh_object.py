@@ -119,9 +119,48 @@ def _offer_every_order(obj) -> None:
         obj.ElementOrder = value if value in ELEMENT_ORDERS else ELEMENT_ORDERS[0]
 
 
-def element_order_number(obj) -> int:
-    """The ElementOrder property as tquad's order (1 or 2)."""
-    return 2 if obj.ElementOrder == "2nd" else 1
+def _order_number(value: str) -> int:
+    """An ElementOrder value as tquad's order (1 or 2)."""
+    return 2 if value == "2nd" else 1
+
+
+def _length(value) -> float:
+    """A length property's value in mm (a Quantity, or a number in scripts)."""
+    return float(getattr(value, "Value", value))
+
+
+#: Each keyword of tquad.mesh_shape the object offers: the property it comes from
+#: and how its value becomes the keyword's. The one place the mesh object's inputs
+#: meet the module's options; tests/freecad/test_headless.py checks that this and
+#: OPTIONS_NOT_OFFERED cover every keyword and name only properties the object has.
+OPTION_PROPERTIES = {
+    "size": ("CharacteristicLengthMax", _length),
+    "min_size": ("CharacteristicLengthMin", _length),
+    "faces": ("Faces", meshing.parse_faces),
+    "corners": ("Corners", meshing.parse_corners),
+    "t4_ratio": ("T4Ratio", int),
+    "smooth": ("Smooth", bool),
+    "best_corners": ("BestCorners", bool),
+    "order": ("ElementOrder", _order_number),
+    "sew": ("Sew", bool),
+}
+
+#: The keywords of tquad.mesh_shape the object does not offer as properties, and why.
+OPTIONS_NOT_OFFERED = {
+    "brep_text_or_path": "the linked Part's shape, sent as BREP text",
+    "keep_going": "always on: refused faces come back as records and KeepGoing decides",
+    "allow_inverted": "a FEM mesh never takes inverted, degenerate or folded quads",
+    "threads": "all cores",
+    "t5_cut_edges": "chosen per region from its geometry",
+    "max_quads": "the module's limit",
+    "progress": "the progress dialog and its Cancel button",
+    "read_timeout": "the module's default, scaled to the shape",
+}
+
+
+def mesh_options(obj) -> dict:
+    """The keywords of tquad.mesh_shape from the object's properties (OPTION_PROPERTIES)."""
+    return {keyword: convert(getattr(obj, name)) for keyword, (name, convert) in OPTION_PROPERTIES.items()}
 
 
 def add_properties(obj) -> None:
@@ -243,12 +282,9 @@ class TemplateQuadMesh(StatelessProxy):
         if FreeCAD.GuiUp:
             from .progress_dialog import run_with_progress
             run = run_with_progress
-        return run(lambda progress: meshing.mesh_shape(
-            shape, size=obj.CharacteristicLengthMax.Value,
-            min_size=obj.CharacteristicLengthMin.Value, faces=meshing.parse_faces(obj.Faces),
-            corners=meshing.parse_corners(obj.Corners), t4_ratio=obj.T4Ratio,
-            keep_going=True, smooth=obj.Smooth, best_corners=obj.BestCorners,
-            order=element_order_number(obj), sew=obj.Sew, progress=progress), f"Meshing {obj.Part.Label}")
+        options = mesh_options(obj)
+        return run(lambda progress: meshing.mesh_shape(shape, keep_going=True, progress=progress, **options),
+                   f"Meshing {obj.Part.Label}")
 
     @staticmethod
     def _source_shape(obj):
