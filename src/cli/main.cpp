@@ -28,6 +28,22 @@ const char* const exit_status_text =
     "where); 1 an internal failure. The output file is written only when the whole mesh\n"
     "succeeded and passed its checks.";
 
+// A length option's check: a finite number over 0, or of 0 or more with `zero_allowed`.
+CLI::Validator length_check(const std::string& flag, bool zero_allowed) {
+  return CLI::Validator(
+      [flag, zero_allowed](std::string& text) -> std::string {
+        try {
+          std::size_t used = 0;
+          const double value = std::stod(text, &used);
+          if (used == text.size() && std::isfinite(value) && (value > 0 || (zero_allowed && value == 0))) return "";
+        } catch (const std::exception&) {
+        }
+        return flag + (zero_allowed ? " must be a length of 0 or more" : " must be a positive length") + ", got '" +
+               text + "'";
+      },
+      "", zero_allowed ? "non-negative" : "positive");
+}
+
 int run_cli(int argc, char** argv) {
   CLI::App app{"TemplateQuad: all-quadrilateral meshes by hierarchical templates (T0..T5)", "tquad"};
   app.footer(std::string("Examples: tquad mesh plate.json -o plate.vtu --report json\n"
@@ -76,17 +92,13 @@ int run_cli(int argc, char** argv) {
                    "diagonal / 25). Each edge gets round(length / H) segments, at least 1,\n"
                    "then counts change by one where a face's total would be odd.")
       ->type_name("H")
-      ->check(CLI::Validator(
-          [](std::string& text) -> std::string {
-            try {
-              std::size_t used = 0;
-              const double value = std::stod(text, &used);
-              if (used == text.size() && value > 0 && std::isfinite(value)) return "";
-            } catch (const std::exception&) {
-            }
-            return "--size must be a positive length, got '" + text + "'";
-          },
-          "", "positive"));
+      ->check(length_check("--size", false));
+  mesh->add_option("--min-size", command.shape.min_size,
+                   "CAD input: the target edge length never goes below H, given or automatic\n"
+                   "(default 0: no floor; above --size it is an error); curved and short edges\n"
+                   "may still get shorter segments")
+      ->type_name("H")
+      ->check(length_check("--min-size", true));
   mesh->add_option("--faces", command.faces,
                    "CAD input: mesh only these faces (0-based, as FreeCAD's Shape.Faces\n"
                    "order), e.g. 0,2,5-7")

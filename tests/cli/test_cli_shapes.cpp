@@ -541,6 +541,18 @@ TEST_F(ShapeCli, SizeMustBePositive) {
   expect_refused(shape_file("bspline_patch.brep"), {"--size", "abc"}, {"--size"});
 }
 
+TEST_F(ShapeCli, MinSizeIsAFloorUnderTheSize) {
+  // Python's and FreeCAD's min_size: the automatic size (diagonal / 25) is raised to it,
+  // a given size under it is refused, and it is a length of 0 or more.
+  const json floor = report_of(shape_file("bspline_patch.brep"), "floor.json", {"--min-size", "12.5"});
+  ASSERT_FALSE(HasFailure());
+  EXPECT_EQ(floor["edge_size"], 12.5);
+  expect_refused(shape_file("bspline_patch.brep"), {"--size", "5", "--min-size", "6"},
+                 {"minimum element size (6)", "element size (5)"});
+  expect_refused(shape_file("bspline_patch.brep"), {"--min-size", "-1"}, {"--min-size"});
+  expect_refused(shape_file("bspline_patch.brep"), {"--min-size", "abc"}, {"--min-size"});
+}
+
 TEST_F(ShapeCli, SmallerSizeGivesMoreQuads) {
   const json coarse = report_of(shape_file("bspline_patch.brep"), "coarse.json", {"--size", "10"});
   const json fine = report_of(shape_file("bspline_patch.brep"), "fine.json", {"--size", "5"});
