@@ -28,7 +28,7 @@ constexpr double kSquareScale = 0.55;
 // kSquareScale. Straight sides leave the square's corners at 90 degrees inside and
 // 135 outside (scaled Jacobian 0.707 in the patches around); a third of the way
 // turns each side's ends by about 15 degrees on a circle, so both corners near 120
-// (0.87), above the smoother's good_enough, and the smoother has little left to do.
+// (0.87), and the smoother has little left to do.
 constexpr double kSideBow = 1.0 / 3;
 
 // The mesh (the loop's points first, bit-exact), or nothing when the domain is not

@@ -46,8 +46,11 @@ struct SmoothingOptions {
   // Corners under this get the steepest ascent (the Laplacian alone barely moves a
   // node whose neighbours are themselves badly placed).
   double search_below = 0.6;
-  // Nodes whose corners around all reach this are left alone unless a neighbour moves.
-  double good_enough = 0.8;
+  // Nodes whose corners around all reach this are left alone unless a neighbour moves;
+  // below it the sum of the corners is raised, the worst held. High, because fair
+  // corners between 0.8 and 0.95 are most of a mesh's corners: raising them lifts the
+  // mean of nearly every part, at no measurable cost in time (the moves are few).
+  double good_enough = 0.95;
 };
 
 struct SmoothingResult {
