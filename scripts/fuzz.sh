@@ -18,7 +18,7 @@ targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(fuzz_boundary fuzz_domain fuzz_brep fuzz_step)
 build="$repo_dir/build-fuzz"
 cmake -S "$repo_dir" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
-  -DTQUAD_FUZZ=ON -DTQUAD_BUILD_TESTS=OFF > /dev/null
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DTQUAD_FUZZ=ON -DTQUAD_BUILD_TESTS=OFF > /dev/null
 cmake --build "$build" --target "${targets[@]}"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export LSAN_OPTIONS="suppressions=$repo_dir/scripts/lsan_suppressions.txt:print_suppressions=0"

@@ -5,7 +5,10 @@
 set -euo pipefail
 repo_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build="$repo_dir/build-sanitize"
-cmake -S "$repo_dir" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTQUAD_SANITIZE=ON > /dev/null
+# Line tables only (-g1): the sanitizers' stack traces keep their files and lines, and
+# a translation unit compiles in about three quarters of the time it takes with -g.
+cmake -S "$repo_dir" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DTQUAD_SANITIZE=ON > /dev/null
 cmake --build "$build" --target tquad core_tests occ_tests cli_tests
 # Leaks are reported, except OpenCASCADE's own (its allocations live until exit by
 # design): scripts/lsan_suppressions.txt names them.
