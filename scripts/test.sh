@@ -9,9 +9,11 @@ ctest --test-dir "$repo_dir/build" --output-on-failure --timeout 600 -j "$(nproc
 # table of faces meshed and refused per file; show them.
 grep -h -e "\[ quality  \]" -e "\[ shapes   \]" "$repo_dir/build/Testing/Temporary/LastTest.log" || true
 # In CI (CI=true), or with --sanitize: the C++ suites again under AddressSanitizer and
-# UndefinedBehaviorSanitizer, and a short run of each fuzz target (about 13 minutes
-# more on 2 cores). The shape targets fork a reader per input (about 10 runs a second
-# under the sanitizers): 200 runs each.
+# UndefinedBehaviorSanitizer, and a short run of each fuzz target (on 2 cores the
+# sanitizer build takes about 10 minutes and its suites about 12, the generated-case
+# property suites most of them; the fuzz build and runs come on top). The shape
+# targets fork a reader per input (about 10 runs a second under the sanitizers): 200
+# runs each.
 if [ "${CI:-}" = true ] || [ "${1:-}" = --sanitize ]; then
   "$repo_dir/scripts/sanitize.sh"
   "$repo_dir/scripts/fuzz.sh" 2000 fuzz_boundary fuzz_domain
