@@ -6,6 +6,7 @@
 #include <Geom_Curve.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Iterator.hxx>
 #include <gp_Pnt.hxx>
 
 #include <algorithm>
@@ -121,6 +122,21 @@ std::optional<std::vector<double>> ring_parameters(const TopoDS_Edge& edge, cons
   return params;
 }
 
+// Whether a face has two wires, one of them a single edge: the only faces the ring
+// pass can align, found without building every face's boundary.
+bool two_loops_one_a_single_edge(const TopoDS_Face& face) {
+  int wires = 0;
+  bool single = false;
+  for (TopoDS_Iterator w(face); w.More(); w.Next()) {
+    if (w.Value().ShapeType() != TopAbs_WIRE) continue;
+    ++wires;
+    int edges = 0;
+    for (TopoDS_Iterator e(w.Value()); e.More(); e.Next()) ++edges;
+    single = single || edges == 1;
+  }
+  return wires == 2 && single;
+}
+
 // The length of a closed loop of nodes, by its chords.
 double loop_length(const std::vector<NodeId>& loop, const std::vector<Vec3>& nodes) {
   double length = 0;
@@ -155,7 +171,7 @@ int align_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshed,
   // project onto it, so that the mapped ring's quads (mapped_ring.h) cross the ring.
   // Its vertex stays, facing the other loop's nearest node.
   for (int f = 0; f < index.face_count(); ++f) {
-    if (!meshed[f]) continue;
+    if (!meshed[f] || !two_loops_one_a_single_edge(index.face(f))) continue;
     FaceBoundary b;
     try {
       b = face_boundary(index, f, edges, nodes);
