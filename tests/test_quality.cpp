@@ -108,6 +108,25 @@ TEST(Quality, RectanglesScoreOne) {
   }
 }
 
+TEST(Quality, ATriangleInEffectIsCollapsedAndAThinRectangleIsNot) {
+  // A side 1e-5 long facing one of 1: every corner is about 90 or 45 degrees, yet the
+  // Jacobian determinant at the short side is 1e-5 of the one facing it.
+  const std::array<Vec3, 4> wedge{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{1, 1, 0}, Vec3{0, 1e-5, 0}};
+  EXPECT_GT(scaled_jacobian(wedge, kUp), 0.5);
+  EXPECT_TRUE(is_collapsed(wedge));
+  EXPECT_TRUE(quad_corners(wedge, {kUp, kUp, kUp, kUp}).collapsed);
+  EXPECT_TRUE(is_bad_quad(wedge, scaled_jacobian(wedge, kUp)));
+  // A rectangle 1e-5 wide (a strip face far narrower than the size): its Jacobian is
+  // the same at every corner, and it is the only mesh such a face has.
+  const std::array<Vec3, 4> strip{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{1, 1e-5, 0}, Vec3{0, 1e-5, 0}};
+  EXPECT_FALSE(is_collapsed(strip));
+  EXPECT_FALSE(planar_quad_corners(strip).collapsed);
+  EXPECT_FALSE(is_bad_quad(strip, scaled_jacobian(strip, kUp)));
+  // Tapering to a tenth of its width across its length: not collapsed either.
+  const std::array<Vec3, 4> taper{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{1, 1e-4, 0}, Vec3{0, 1e-5, 0}};
+  EXPECT_FALSE(is_collapsed(taper));
+}
+
 TEST(Quality, ParallelogramScoresItsAngle) {
   const double angle = M_PI / 3;  // 60 degrees
   const Vec3 s{std::cos(angle), std::sin(angle), 0};

@@ -127,9 +127,10 @@ int run_cli(int argc, char** argv) {
                  "surfaces, nor of a boundary region in its plane or on the surface its mesh\n"
                  "spans (a curved loop)");
   mesh->add_flag("--allow-inverted", command.shape.allow_inverted,
-                 "CAD input: keep a face whose mesh still has inverted, degenerate or folded\n"
-                 "quads after repair (a corner's scaled Jacobian at or below 1e-6 against the\n"
-                 "surface normal or the quad's own; reported per face) instead of refusing it");
+                 "CAD input: keep a face whose mesh still has inverted, degenerate, folded or\n"
+                 "collapsed quads after repair (a corner's scaled Jacobian at or below 1e-6\n"
+                 "against the surface normal or the quad's own, or a corner's Jacobian under\n"
+                 "1/1000 of another's; reported per face) instead of refusing it");
   mesh->add_flag("--sew", command.shape.sew,
                  "CAD input: join faces that touch without sharing their edge (an IGES file of\n"
                  "trimmed surfaces) before meshing, so the mesh is connected there");

@@ -239,18 +239,18 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
         << " quads are degenerate (a corner's scaled Jacobian within 1e-6 of 0: an angle of 0 or 180 degrees)\n";
   }
   // A collapsed quad's corners can all be sound (quality.h): it is counted and named
-  // by face, since an edge of the CAD model far under the size makes it, there.
+  // by face. Of CAD input only a face kept by --allow-inverted has any.
   const std::vector<std::pair<int, long long>> collapsed_faces =
       kind == InputKind::shape && quality.collapsed > 0 ? collapsed_quads_per_face(shape)
                                                         : std::vector<std::pair<int, long long>>{};
   if (quality.collapsed > 0) {
     err << "tquad: warning: " << quality.collapsed << " of " << shape.quads.size()
-        << " quads are collapsed (an edge under 1/1000 of the quad's longest: a triangle in effect)";
+        << " quads are collapsed (a corner's Jacobian under 1/1000 of another's: a triangle in effect)";
     std::string faces;
     for (const auto& [face, count] : collapsed_faces) {
       faces += (faces.empty() ? "" : ", ") + std::to_string(face) + " (" + std::to_string(count) + ")";
     }
-    if (!faces.empty()) err << ", in faces " << faces << " (a CAD edge there far shorter than the size?)";
+    if (!faces.empty()) err << ", in faces " << faces;
     err << "\n";
   }
   for (const std::string& w : read_warnings) err << "tquad: warning: " << one_line(w) << "\n";
@@ -262,7 +262,8 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
       faces += (faces.empty() ? "" : ", ") + std::to_string(face);
     }
     err << "tquad: warning: " << bad << " of " << shape.quads.size()
-        << " quads are inverted, degenerate or folded (kept by --allow-inverted), in faces " << faces << "\n";
+        << " quads are inverted, degenerate, folded or collapsed (kept by --allow-inverted), in faces " << faces
+        << "\n";
   }
   for (const RefusedFace& f : shape.refused_faces) {
     err << "tquad: warning: refused " << one_line(f.reason) << "\n";
@@ -308,6 +309,7 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
         changes.push_back({{"edge", c.edge}, {"from", c.from}, {"to", c.to}});
       }
       report["changed_edges"] = changes;
+      report["contracted_edges"] = shape_result.contracted_edges;
       nlohmann::ordered_json unsewn = nlohmann::ordered_json::array();
       for (const UnsewnEdgePair& p : shape_result.unsewn_edges) unsewn.push_back({p.first, p.second});
       report["unsewn_edge_pairs"] = unsewn;

@@ -45,7 +45,13 @@ double corner_jacobian(double twice_area, double lengths, double normal_length) 
   return normal_length > 0 ? twice_area / (lengths * normal_length) : 0.0;
 }
 
-bool collapsed_sides(double shortest, double longest) { return shortest < kCollapsedEdgeRatio * longest; }
+// Whether the smallest of a quad's corner areas |e_i x e_(i-1)| (the bilinear map's
+// Jacobian determinant at the corners) is under kCollapsedAreaRatio of the largest.
+bool collapsed_corners(const std::array<double, 4>& area) {
+  const double low = std::min(std::min(area[0], area[1]), std::min(area[2], area[3]));
+  const double high = std::max(std::max(area[0], area[1]), std::max(area[2], area[3]));
+  return !(low >= kCollapsedAreaRatio * high) || high == 0;
+}
 
 // A quad's sides, edge[i] from corner i to corner i + 1, their lengths, the shortest
 // and the longest.
@@ -109,11 +115,11 @@ template <typename CrossOf, typename SignedBy>
 QuadCorners corners_from(const std::array<Vec3, 4>& p, const CrossOf& cross_of, const SignedBy& signed_by) {
   const auto [edge, length, shortest, longest] = quad_sides(p);
   QuadCorners out;
-  out.collapsed = collapsed_sides(shortest, longest);
   out.edge_ratio = longest > 0 ? shortest / longest : 0.0;
   auto own = cross_of(p[2] - p[0], p[3] - p[1]);  // the diagonals' normal
   const double own_length = norm(own);
   if (own_length > 0) own = (1.0 / own_length) * own;
+  std::array<double, 4> area{};
   for (int i = 0; i < 4; ++i) {
     const double lengths = length[i] * length[(i + 3) % 4];
     if (lengths == 0) {
@@ -121,10 +127,13 @@ QuadCorners corners_from(const std::array<Vec3, 4>& p, const CrossOf& cross_of, 
       continue;
     }
     // (e_next x e_prev) with e_prev = -edge[i - 1].
-    const auto turn = (-1.0 / lengths) * cross_of(edge[i], edge[(i + 3) % 4]);
+    const auto corner = cross_of(edge[i], edge[(i + 3) % 4]);
+    area[i] = norm(corner);
+    const auto turn = (-1.0 / lengths) * corner;
     out.own_jacobian[i] = dot(turn, own);
     out.jacobian[i] = signed_by(turn, i, out.own_jacobian[i]);
   }
+  out.collapsed = collapsed_corners(area);
   return out;
 }
 
@@ -150,25 +159,28 @@ QuadQuality quad_quality(const std::array<Vec3, 4>& p, const Vec3& normal) {
   // length is length[i - 1]; the corner's cross product serves both measures.
   const auto [edge, length, shortest, longest] = quad_sides(p);
   const double normal_length = norm(normal);
-  std::array<double, 4> alpha;
+  std::array<double, 4> alpha, area;
   QuadQuality out;
   out.scaled_jacobian = 1.0;
   for (int i = 0; i < 4; ++i) {
     const Vec3& a = edge[i];
     const Vec3 b = p[(i + 3) % 4] - p[i];
-    const double twice_area = dot(cross(a, b), normal);
+    const Vec3 turn = cross(a, b);
+    area[i] = norm(turn);
+    const double twice_area = dot(turn, normal);
     alpha[i] = lee_lo_alpha(a, b, p[(i + 1) % 4] - p[(i + 3) % 4], twice_area);
     out.scaled_jacobian =
         std::min(out.scaled_jacobian, corner_jacobian(twice_area, length[i] * length[(i + 3) % 4], normal_length));
   }
   out.lee_lo = lee_lo_of(alpha);
-  out.collapsed = collapsed_sides(shortest, longest);
+  out.collapsed = collapsed_corners(area);
   return out;
 }
 
 bool is_collapsed(const std::array<Vec3, 4>& p) {
-  const QuadSides sides = quad_sides(p);
-  return collapsed_sides(sides.shortest, sides.longest);
+  std::array<double, 4> area;
+  for (int i = 0; i < 4; ++i) area[i] = norm(cross(p[(i + 1) % 4] - p[i], p[(i + 3) % 4] - p[i]));
+  return collapsed_corners(area);
 }
 
 double own_scaled_jacobian(const std::array<Vec3, 4>& p) {
@@ -176,7 +188,7 @@ double own_scaled_jacobian(const std::array<Vec3, 4>& p) {
 }
 
 bool is_bad_quad(const std::array<Vec3, 4>& p, double surface_worst) {
-  return !(surface_worst > kDegenerateUpTo) || !(own_scaled_jacobian(p) > kDegenerateUpTo);
+  return !(surface_worst > kDegenerateUpTo) || !(own_scaled_jacobian(p) > kDegenerateUpTo) || is_collapsed(p);
 }
 
 namespace {

@@ -73,9 +73,14 @@ constexpr double kInvertedBelow = 1e-9;
 constexpr double kSurfaceInvertedBelow = 1e-3;
 constexpr double kDegenerateUpTo = 1e-6;
 
-// A quad whose shortest edge is under this fraction of its longest is a triangle in
-// effect: its corners' scaled Jacobians can all look fine, so it is counted apart.
-constexpr double kCollapsedEdgeRatio = 1e-3;
+// A quad is collapsed, a triangle in effect, when the smallest of its corner areas
+// |e_i x e_(i-1)| (the Jacobian determinant of its bilinear map at the corners) is
+// under this fraction of the largest: the Jacobian ratio that finite element codes
+// check. Its corners' scaled Jacobians can all look fine (a side far shorter than
+// the one facing it, next to a CAD edge far shorter than the size), so it is judged
+// apart. A thin rectangle is not collapsed: a face narrower than the size (a strip)
+// can only be meshed with such quads, and their Jacobian is even.
+constexpr double kCollapsedAreaRatio = 1e-3;
 bool is_collapsed(const std::array<Vec3, 4>& quad);
 
 // The quad's scaled Jacobian against its own normal, the cross product of its
@@ -88,9 +93,8 @@ double own_scaled_jacobian(const std::array<Vec3, 4>& quad);
 // changes sign in such a quad, whichever normal shows it: a quad folded across a
 // curved surface can keep every corner positive against the surface's normals and not
 // against its own, and a 180-degree corner at a pole shows against its own normal
-// alone. A collapsed quad (is_collapsed) is not bad by this rule: an edge of the CAD
-// model far shorter than the element size makes one, a triangle in effect, which the
-// face cannot do without while the edge is in its boundary; it is counted apart.
+// alone. A collapsed quad (is_collapsed) is bad too: a solver's Jacobian varies a
+// thousandfold across it.
 bool is_bad_quad(const std::array<Vec3, 4>& quad, double surface_worst);
 
 // Histogram of the scaled Jacobian: bin 0 counts the quads below 0 (inverted, or a
@@ -104,7 +108,7 @@ struct QualitySummary {
   std::array<long long, kJacobianBins> jacobian_histogram{};
   long long inverted = 0;    // quads with a scaled Jacobian below -kInvertedBelow
   long long degenerate = 0;  // quads with a scaled Jacobian in [-kInvertedBelow, kDegenerateUpTo]
-  long long collapsed = 0;   // quads with an edge under kCollapsedEdgeRatio of their longest
+  long long collapsed = 0;   // collapsed quads (is_collapsed)
 };
 
 // Normal used to sign the metrics: `reference` for every quad when given (a planar

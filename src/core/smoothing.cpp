@@ -281,10 +281,8 @@ class Smoother {
         // Where a corner is still inverted, also the compass search: across a fold
         // the finite differences mislead the ascent. On the mildly non-convex
         // generated boundaries it leaves fewer inverted quads than the ascent alone.
-        // So too around a collapsed quad (an edge under kCollapsedEdgeRatio of its
-        // longest, next to a tiny CAD edge): its corners may be fine, and nothing
-        // but the edge ratio says which way to go. Without it such quads next to tiny
-        // CAD edges stayed collapsed.
+        // So too around a collapsed quad (is_collapsed, next to a tiny CAD edge): its
+        // corners may be fine, and nothing but the corner areas say which way to go.
         if (here.worst < 0 || here.collapsed > 0) moved = compass_search(n, here) || moved;
         if (!moved) continue;
         ++moves;
@@ -585,8 +583,7 @@ double orientation_in_coordinates(const std::vector<Quad>& quads, const std::vec
 
 namespace {
 
-// Inverted corners (inverted_corners), and quads with an edge under
-// kCollapsedEdgeRatio of their longest.
+// Inverted corners (inverted_corners), and collapsed quads (is_collapsed).
 struct SurfaceFolds {
   int inverted = 0, collapsed = 0;
 };

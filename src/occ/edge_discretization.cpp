@@ -246,7 +246,7 @@ std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vect
       continue;
     }
     const int n = segments[e];
-    if (n <= 0) continue;
+    if (n <= 0 || index.contracted(e)) continue;
     EdgeSpacing own;  // without `kept`: computed for this call alone
     EdgeSpacing& spacing = kept ? kept->last[e] : own;
     if (spacing.segments != n) {

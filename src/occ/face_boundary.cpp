@@ -352,6 +352,7 @@ WireWalk walk_wire(const TopoDS_Wire& wire, const TopoDS_Face& face, int face_in
   for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next()) {
     const TopoDS_Edge& occurrence = it.Current();
     const int e = index.edge_index(occurrence);
+    if (index.contracted(e)) continue;  // its two ends are one node (edge_contraction.h)
     const EdgeNodes& en = edges[e];
     double f = 0, l = 0;
     const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(occurrence, face, f, l);

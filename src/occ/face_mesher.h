@@ -32,10 +32,10 @@ struct FaceMeshResult {
   std::string template_tree;
   bool used_projection = false;  // the 3D fallback was used
   long long inverted = 0;        // quads still inverted after repair
-  // Quads unfit for analysis (is_bad_quad): inverted, degenerate or folded.
+  // Quads unfit for analysis (is_bad_quad): inverted, degenerate, folded or collapsed.
   // A face keeps none unless the user allows them (ShapeMeshOptions::allow_inverted).
   long long bad = 0;
-  long long collapsed = 0;       // quads with an edge under kCollapsedEdgeRatio of their longest
+  long long collapsed = 0;       // collapsed quads (is_collapsed), counted in `bad` too
   long long off_surface = 0;     // quads cutting across the surface (kOffSurfaceRatio)
   double worst_corner = 1.0;     // lowest scaled Jacobian against the outer normal
   std::vector<double> scaled_jacobian;  // per quad, its corners signed by the outer normal

@@ -184,8 +184,13 @@ void refuse_bad_quads(const FaceMeshResult& mesh, const std::string& name, const
   if (mesh.bad == 0 || options.allow_inverted) return;
   char worst[32];
   std::snprintf(worst, sizeof worst, "%.3g", mesh.worst_corner);
+  const std::string collapsed =
+      mesh.collapsed > 0 ? " (" + std::to_string(mesh.collapsed) +
+                               " collapsed: a corner's Jacobian under 1/1000 of another's, a triangle in effect)"
+                         : "";
   throw InvertedQuadsError(name + ": " + std::to_string(mesh.bad) + " of " + std::to_string(mesh.quads.size()) +
-                               " quads stay inverted, degenerate or folded after repair (worst corner " + worst +
+                               " quads stay inverted, degenerate, folded or collapsed after repair" + collapsed +
+                               " (worst corner " + worst +
                                " against the surface; " + mesh.template_tree.substr(0, 60) + ")",
                            mesh.quads.size(), has_quad_over_curvature(mesh));
 }

@@ -20,9 +20,12 @@ WireEdges face_wires_with_poles(const ShapeIndex& index, int face) {
     std::vector<int> edges;
     for (BRepTools_WireExplorer it(wire, f); it.More(); it.Next()) {
       const TopoDS_Edge& edge = it.Current();
-      if (!BRep_Tool::Degenerated(edge)) edges.push_back(index.edge_index(edge));
+      if (!BRep_Tool::Degenerated(edge)) {
+        if (!index.contracted(index.edge_index(edge))) edges.push_back(index.edge_index(edge));
+      }
       else if (is_pole_edge(edge, f)) edges.push_back(kPoleEdge);
-      // A degenerate edge that is a point of the chart is no side of the face.
+      // A degenerate edge that is a point of the chart is no side of the face, nor a
+      // contracted edge (edge_contraction.h).
     }
     if (wire.IsSame(outer)) wires.insert(wires.begin(), std::move(edges));
     else wires.push_back(std::move(edges));

@@ -23,7 +23,8 @@ int face_boundary_total(const ShapeIndex& index, int face, const std::vector<int
   // The explorer meets a seam edge twice, once per orientation, as the face's
   // boundary loop does.
   for (TopExp_Explorer it(index.face(face), TopAbs_EDGE); it.More(); it.Next()) {
-    total += segments[index.edge_index(it.Current())];
+    const int e = index.edge_index(it.Current());
+    if (!index.contracted(e)) total += segments[e];
   }
   return total;
 }

@@ -5,6 +5,7 @@
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
 
 #include <algorithm>
@@ -33,6 +34,26 @@ ShapeIndex::ShapeIndex(const TopoDS_Shape& shape) {
 const TopoDS_Face& ShapeIndex::face(int i) const { return TopoDS::Face(faces_(i + 1)); }
 const TopoDS_Edge& ShapeIndex::edge(int i) const { return TopoDS::Edge(edges_(i + 1)); }
 const TopoDS_Vertex& ShapeIndex::vertex(int i) const { return TopoDS::Vertex(vertices_(i + 1)); }
+
+void ShapeIndex::contract_edges(const std::vector<int>& edges) {
+  if (edges.empty()) return;
+  contracted_.assign(edges_.Extent(), 0);
+  std::vector<int> parent(vertices_.Extent());
+  for (std::size_t v = 0; v < parent.size(); ++v) parent[v] = static_cast<int>(v);
+  const auto root = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (int e : edges) {
+    contracted_[e] = 1;
+    TopoDS_Vertex first, last;
+    TopExp::Vertices(edge(e), first, last);
+    const int a = root(vertices_.FindIndex(first) - 1), b = root(vertices_.FindIndex(last) - 1);
+    parent[std::max(a, b)] = std::min(a, b);  // the lowest index is the group's
+  }
+  joined_.resize(parent.size());
+  for (std::size_t v = 0; v < parent.size(); ++v) joined_[v] = root(static_cast<int>(v));
+}
 
 std::vector<int> ShapeIndex::outer_wire_vertices(int i) const {
   std::vector<int> out;

@@ -28,7 +28,18 @@ class ShapeIndex {
 
   int face_index(const TopoDS_Shape& face) const { return faces_.FindIndex(face) - 1; }
   int edge_index(const TopoDS_Shape& edge) const { return edges_.FindIndex(edge) - 1; }
-  int vertex_index(const TopoDS_Shape& vertex) const { return vertices_.FindIndex(vertex) - 1; }
+  // A vertex's index; after contract_edges, the index its group of joined vertices
+  // goes by (the lowest), so every edge and face sees one node there.
+  int vertex_index(const TopoDS_Shape& vertex) const {
+    const int v = vertices_.FindIndex(vertex) - 1;
+    return v < 0 || joined_.empty() ? v : joined_[v];
+  }
+
+  // Contracts `edges` (edge_contraction.h): each one's two vertices are joined into one
+  // node and the edge is no side of any face, with no segment. Called once, before any
+  // count or node is made.
+  void contract_edges(const std::vector<int>& edges);
+  bool contracted(int edge) const { return !contracted_.empty() && contracted_[edge]; }
 
   // Indices of the distinct faces an edge bounds (a seam edge bounds its face once).
   const std::vector<int>& faces_of_edge(int edge) const { return faces_of_edge_[edge]; }
@@ -40,6 +51,8 @@ class ShapeIndex {
  private:
   TopTools_IndexedMapOfShape faces_, edges_, vertices_;
   std::vector<std::vector<int>> faces_of_edge_;
+  std::vector<int> joined_;        // per vertex, its group's index (empty: none joined)
+  std::vector<char> contracted_;   // per edge (empty: none contracted)
 };
 
 }  // namespace tquad

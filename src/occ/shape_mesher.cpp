@@ -1,3 +1,4 @@
+#include "occ/edge_contraction.h"
 #include "occ/shape_mesher.h"
 
 #include "occ/band_alignment.h"
@@ -260,9 +261,17 @@ class ShapeMeshContext {
     to_mesh_ = meshed_;
     for (const auto& [f, why] : damaged_) if (f >= 0 && f < index_.face_count()) to_mesh_[f] = 0;
     edge_floor_ = edge_turn_minimums(index_, usable);
+    sized_ = edge_segment_counts(index_, result_.size, edge_floor_, lengths_, usable);
+    // Edges far shorter than the size become one node (edge_contraction.h), before
+    // any face's sides are counted.
+    result_.contracted_edges = edges_to_contract(index_, lengths_, usable, result_.size);
+    index_.contract_edges(result_.contracted_edges);
+    for (int e = 0; e < index_.edge_count(); ++e) {
+      if (index_.contracted(e)) edge_floor_[e] = sized_[e] = 0;
+    }
     raise_three_edge_face_floors(index_, to_mesh_, edge_floor_);
     raise_two_edge_loop_floors(index_, to_mesh_, edge_floor_);
-    sized_ = edge_segment_counts(index_, result_.size, edge_floor_, lengths_, usable);
+    for (int e = 0; e < index_.edge_count(); ++e) sized_[e] = std::max(sized_[e], edge_floor_[e]);
     spacings_.cusp_ends = cusp_ends(index_, result_.size, lengths_);
     needed_.assign(index_.edge_count(), 0);
     for (int f = 0; f < index_.face_count(); ++f) {
@@ -285,7 +294,9 @@ class ShapeMeshContext {
   // every meshed face's total made even. Cuts inside faces get theirs with the face.
   void assign_intervals() {
     segments_ = sized_;
-    for (int e = 0; e < index_.edge_count(); ++e) segments_[e] = needed_[e] ? std::max(segments_[e], minimum_[e]) : 0;
+    for (int e = 0; e < index_.edge_count(); ++e) {
+      segments_[e] = needed_[e] && !index_.contracted(e) ? std::max(segments_[e], minimum_[e]) : 0;
+    }
     // No change goes below the curvature and three-edge-face bounds or a refinement.
     std::vector<int> floor = edge_floor_;
     for (int e = 0; e < index_.edge_count(); ++e) floor[e] = std::max(floor[e], minimum_[e]);
@@ -486,7 +497,7 @@ class ShapeMeshContext {
 
   const TopoDS_Shape& shape_;
   const ShapeMeshOptions& options_;
-  const ShapeIndex index_;
+  ShapeIndex index_;  // edges contracted once, in index_faces
   std::mutex progress_mutex_;
   ShapeMeshResult result_;
   std::vector<char> meshed_, needed_;

@@ -122,6 +122,8 @@ struct ShapeMeshResult {
   int aligned_bands = 0;                 // bands whose long sides' nodes face each other (band_alignment.h)
   int balanced_rings = 0;                // faces of two loops given equal totals
   int quartered_pole_rims = 0;           // disks around a pole given a multiple of 4 on their rim
+  // Edges far shorter than the size, each made one node (edge_contraction.h).
+  std::vector<int> contracted_edges;
   // Edges of meshed faces that lie on each other without being one edge (the file's
   // faces are not sewn there): the mesh has a crack along each (unsewn_edges.h).
   std::vector<UnsewnEdgePair> unsewn_edges;

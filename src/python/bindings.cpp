@@ -253,6 +253,9 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
   for (const UnsewnEdgePair& p : result.unsewn_edges) unsewn.append(py::make_tuple(p.first, p.second));
   out["unsewn_edge_pairs"] = unsewn;
   out["sewn_edges"] = result.sewn_edges;
+  py::list contracted;
+  for (int e : result.contracted_edges) contracted.append(e);
+  out["contracted_edges"] = contracted;
   py::list bad_faces;
   for (const auto& [face, count] : result.bad_quad_faces) {
     py::dict d;

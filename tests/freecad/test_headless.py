@@ -175,25 +175,22 @@ class MeshObjectTest(unittest.TestCase):
         for j in range(1, by_node.QuadrangleCount + 1):
             self.assertEqual(by_file.getElementNodes(j), by_node.getElementNodes(j), f"quad {j}")
 
-    def test_collapsed_quads_are_named_by_face_in_freecad_terms(self):
-        """A box with one edge chamfered 1e-4 (a strip far narrower than the size): its
-        quads there are collapsed though their corners are sound, and the warning the
-        mesh object prints names the faces as FreeCAD does (1-based), as the Python
-        mesh's collapsed_quad_faces lists them (0-based)."""
+    def test_no_collapsed_quad_reaches_freecad(self):
+        """A box with one edge chamfered 1e-4 (a strip far narrower than the size): the
+        strip is one row of thin rectangles, not collapsed; a face keeping a collapsed
+        quad (a triangle in effect) would be refused with the reason, since FreeCAD
+        offers no way to allow bad quads: none reaches the FEM mesh."""
         from freecad.templatequad import meshing
         box = Part.makeBox(10, 10, 10)
         shape = box.makeChamfer(1e-4, [box.Edges[0]])
-        mesh = meshing.mesh_shape(shape, size=2.0)
-        faces = mesh.collapsed_quad_faces
-        self.assertTrue(faces, "no collapsed quads listed")
-        self.assertEqual(sum(f["quads"] for f in faces), mesh.quality["collapsed"])
-        warning = meshing.collapsed_warning(mesh)
-        for f in faces:
-            self.assertIn(f"Face{f['face'] + 1} ({f['quads']})", warning)
-        self.assertIn(f"collapsed {mesh.quality['collapsed']}", meshing.quality_summary(mesh))
-        plain = meshing.mesh_shape(box, size=2.0)
-        self.assertEqual(plain.collapsed_quad_faces, [])
-        self.assertEqual(meshing.collapsed_warning(plain), "")
+        strip = [i for i, f in enumerate(shape.Faces) if f.Area < 0.01]
+        self.assertEqual(len(strip), 1)
+        mesh = meshing.mesh_shape(shape, size=2.0, keep_going=True)
+        for refused in mesh.refused_faces:
+            self.assertIn("collapsed", refused["reason"])
+        self.assertNotIn(strip[0], [r["face"] for r in mesh.refused_faces])
+        self.assertEqual(mesh.quality["collapsed"], 0)
+        self.assertIn("collapsed 0", meshing.quality_summary(mesh))
 
     def test_box_is_all_quads_and_equals_tquad(self):
         from freecad.templatequad import make_mesh

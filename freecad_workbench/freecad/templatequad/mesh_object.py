@@ -149,7 +149,7 @@ OPTION_PROPERTIES = {
 OPTIONS_NOT_OFFERED = {
     "brep_text_or_path": "the linked Part's shape, sent as BREP text",
     "keep_going": "always on: refused faces come back as records and KeepGoing decides",
-    "allow_inverted": "a FEM mesh never takes inverted, degenerate or folded quads",
+    "allow_inverted": "a FEM mesh never takes inverted, degenerate, folded or collapsed quads",
     "threads": "all cores",
     "t5_cut_edges": "chosen per region from its geometry",
     "max_quads": "the module's limit",
@@ -252,9 +252,6 @@ class TemplateQuadMesh(StatelessProxy):
         for line in obj.RefusedFaces:
             FreeCAD.Console.PrintWarning(
                 f"TemplateQuad: {obj.Label}: {obj.Part.Label} {line} (not meshed)\n")
-        collapsed = meshing.collapsed_warning(mesh)
-        if collapsed:
-            FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {collapsed}\n")
         unsewn = meshing.unsewn_warning(obj.UnsewnEdges, obj.Sew)
         if unsewn:
             FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {unsewn}\n")

@@ -242,21 +242,6 @@ def quality_summary(mesh) -> str:
             f"inverted {q['inverted']}, degenerate {q['degenerate']}, collapsed {q.get('collapsed', 0)}")
 
 
-def collapsed_warning(mesh) -> str:
-    """collapsed_warning(): what a user reads about collapsed quads ("" for none): an
-    edge under 1/1000 of the quad's longest, a triangle in effect though its corners
-    are sound; an edge of the part far shorter than the element size makes them, in
-    the faces named (FreeCAD's 1-based names)."""
-    faces = getattr(mesh, "collapsed_quad_faces", [])
-    if not faces:
-        return ""
-    total = sum(int(f["quads"]) for f in faces)
-    named = ", ".join(f"Face{int(f['face']) + 1} ({int(f['quads'])})" for f in faces)
-    return (f"{total} collapsed quad(s) (an edge under 1/1000 of the quad's longest: a "
-            f"triangle in effect) in {named}: an edge of the part there is far shorter "
-            f"than the element size")
-
-
 def unsewn_warning(pairs: int, sew: bool) -> str:
     """unsewn_warning(): what a user reads about edges where faces touch without sharing
     the edge ("" for none): the mesh falls apart there, and a solver takes the pieces

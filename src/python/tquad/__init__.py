@@ -25,7 +25,7 @@ FacesRefused = _core.FacesRefused
 #: The ``code`` of a refused face, and what it means.
 REFUSAL_CODES = {
     "cannot_mesh": "no meshing route gave a valid mesh (the reason says what failed)",
-    "inverted_quads": "every mesh found keeps inverted, degenerate or folded quads",
+    "inverted_quads": "every mesh found keeps inverted, degenerate, folded or collapsed quads",
     "too_coarse": "too few boundary segments; a smaller element size gives it more",
     "not_supported": "a kind of face the mesher does not handle yet",
     "damaged": "the face's geometry is invalid",
@@ -94,13 +94,18 @@ class Mesh:
             their neighbours; else 0.
         read_warnings: for a shape file, what the reader read past without losing
             any of the shape (an entity's name written as ``$``), a line each.
+        contracted_edges: for a shape, the edges far shorter than the size (under
+            0.004 of it) whose two ends were made one node: a quad beside such an
+            edge would be a triangle in effect.
         bad_quad_faces: for a shape meshed with ``allow_inverted=True``, the faces
-            kept with inverted, degenerate or folded quads (a corner's scaled
-            Jacobian at or below 1e-6 against the surface normal or the quad's
-            own): dicts ``face``, ``quads``. Without it such faces are refused.
-        collapsed_quad_faces: for a shape, the faces with collapsed quads (an edge
-            under 1/1000 of the quad's longest, its corners sound: a CAD edge far
-            shorter than the size makes them): dicts ``face``, ``quads``.
+            kept with inverted, degenerate, folded or collapsed quads (a corner's
+            scaled Jacobian at or below 1e-6 against the surface normal or the
+            quad's own, or a corner's Jacobian under 1/1000 of another's): dicts
+            ``face``, ``quads``. Without it such faces are refused.
+        collapsed_quad_faces: for a shape meshed with ``allow_inverted=True``, the
+            faces kept with collapsed quads (a corner's Jacobian under 1/1000 of
+            another corner's, its corners' angles sound: a triangle in effect),
+            dicts ``face``, ``quads``; they are in ``bad_quad_faces`` too.
     """
 
     def __init__(self, data: dict):
@@ -113,6 +118,7 @@ class Mesh:
         self.changed_edges: List[dict] = data.get("changed_edges", [])
         self.unsewn_edge_pairs: List[Tuple[int, int]] = data.get("unsewn_edge_pairs", [])
         self.sewn_edges: int = data.get("sewn_edges", 0)
+        self.contracted_edges: List[int] = data.get("contracted_edges", [])
         self.bad_quad_faces: List[dict] = data.get("bad_quad_faces", [])
         self.collapsed_quad_faces: List[dict] = data.get("collapsed_quad_faces", [])
         self.read_warnings: List[str] = data.get("read_warnings", [])

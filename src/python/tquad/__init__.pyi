@@ -20,6 +20,7 @@ class Mesh:
     changed_edges: List[dict]
     unsewn_edge_pairs: List[Tuple[int, int]]
     sewn_edges: int
+    contracted_edges: List[int]
     bad_quad_faces: List[dict]
     collapsed_quad_faces: List[dict]
     read_warnings: List[str]

@@ -1,0 +1,132 @@
+// Edges far shorter than the size are contracted to one node (edge_contraction.h), so
+// no quad beside them is a triangle in effect; where an edge cannot be contracted
+// (the end of a strip face), the quads beside it are collapsed and their face is
+// refused, never written silently.
+#include <gtest/gtest.h>
+
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "core/quality.h"
+#include "occ/edge_contraction.h"
+#include "occ/edge_discretization.h"
+#include "occ/shape_index.h"
+#include "occ/shape_mesher.h"
+
+namespace tquad {
+namespace {
+
+TopoDS_Face polygon_face(const std::vector<gp_Pnt>& points) {
+  BRepBuilderAPI_MakePolygon polygon;
+  for (const gp_Pnt& p : points) polygon.Add(p);
+  polygon.Close();
+  return BRepBuilderAPI_MakeFace(polygon.Wire(), true).Face();
+}
+
+// A 10 x 10 square with one corner cut off by an edge `cut` * sqrt(2) long.
+TopoDS_Face cut_square(double cut) {
+  return polygon_face({gp_Pnt(0, 0, 0), gp_Pnt(10, 0, 0), gp_Pnt(10, 10 - cut, 0), gp_Pnt(10 - cut, 10, 0),
+                       gp_Pnt(0, 10, 0)});
+}
+
+long long collapsed_quads(const ShapeMesh& mesh) {
+  long long count = 0;
+  for (const Quad& q : mesh.quads) {
+    count += is_collapsed({mesh.nodes[q[0]], mesh.nodes[q[1]], mesh.nodes[q[2]], mesh.nodes[q[3]]}) ? 1 : 0;
+  }
+  return count;
+}
+
+double closest_nodes(const ShapeMesh& mesh) {
+  double closest = INFINITY;
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+    for (std::size_t j = i + 1; j < mesh.nodes.size(); ++j) closest = std::min(closest, distance(mesh.nodes[i], mesh.nodes[j]));
+  }
+  return closest;
+}
+
+TEST(EdgeContraction, AnEdgeFarShorterThanTheSizeBecomesOneNode) {
+  ShapeMeshOptions options;
+  options.size = 1.0;
+  // 0.0014 long, under 0.004 of the size: contracted, and the quads around the cut
+  // corner are whole quads.
+  const ShapeMeshResult tiny = mesh_shape(cut_square(1e-3), options);
+  ASSERT_TRUE(tiny.mesh.refused_faces.empty());
+  ASSERT_EQ(tiny.contracted_edges.size(), 1u);
+  EXPECT_EQ(collapsed_quads(tiny.mesh), 0);
+  EXPECT_GT(closest_nodes(tiny.mesh), 0.1);  // its two ends are one node
+  // 0.014 long, over the bound: kept, with a node at each end, and the quad beside it
+  // is not collapsed (its Jacobian ratio is about 0.014).
+  const ShapeMeshResult small = mesh_shape(cut_square(1e-2), options);
+  ASSERT_TRUE(small.mesh.refused_faces.empty());
+  EXPECT_TRUE(small.contracted_edges.empty());
+  EXPECT_EQ(collapsed_quads(small.mesh), 0);
+  EXPECT_NEAR(closest_nodes(small.mesh), 1e-2 * std::sqrt(2.0), 1e-9);
+}
+
+TEST(EdgeContraction, AChainOfShortEdgesIsNotJoinedFurtherThanTheBound) {
+  // Ten collinear edges 0.001 long along the top of a 10 x 10 square: 0.01 in all,
+  // over the bound (0.004) at size 1.
+  std::vector<gp_Pnt> points{gp_Pnt(0, 0, 0), gp_Pnt(10, 0, 0), gp_Pnt(10, 10, 0)};
+  for (int k = 0; k <= 10; ++k) points.push_back(gp_Pnt(5.0 - 1e-3 * k, 10, 0));
+  points.push_back(gp_Pnt(0, 10, 0));
+  const TopoDS_Face face = polygon_face(points);
+  const ShapeIndex index(face);
+  std::vector<double> lengths;
+  edge_segment_counts(index, 1.0, lengths);
+  const std::vector<int> contracted = edges_to_contract(index, lengths, {}, 1.0);
+  EXPECT_FALSE(contracted.empty());
+  EXPECT_LT(contracted.size(), 10u);
+  // Joined vertices, grouped: no group spans the bound.
+  ShapeIndex joined(face);
+  joined.contract_edges(contracted);
+  for (int u = 0; u < index.vertex_count(); ++u) {
+    for (int v = u + 1; v < index.vertex_count(); ++v) {
+      if (joined.vertex_index(index.vertex(u)) != joined.vertex_index(index.vertex(v))) continue;
+      EXPECT_LT(BRep_Tool::Pnt(index.vertex(u)).Distance(BRep_Tool::Pnt(index.vertex(v))), kContractedEdgeRatio) << u << " " << v;
+    }
+  }
+  ShapeMeshOptions options;
+  options.size = 1.0;
+  const ShapeMeshResult result = mesh_shape(face, options);
+  EXPECT_TRUE(result.mesh.refused_faces.empty());
+  EXPECT_EQ(result.contracted_edges, contracted);
+}
+
+TEST(EdgeContraction, AStripsEndsAreKeptAndTheQuadsBesideThemRefuseTheirFaces) {
+  // A square cut by an edge 1.4e-6 long, extruded: the cut's side face is a strip
+  // that wide, whose mesh is one row of thin rectangles (not collapsed: their
+  // Jacobian is even). Its ends are not contracted (the strip would fold onto
+  // itself), so each cap face keeps a quad beside them that is a triangle in effect
+  // where the smoother cannot shrink it a thousandfold: such a face is refused,
+  // named, unless bad quads are allowed.
+  const TopoDS_Shape prism = BRepPrimAPI_MakePrism(cut_square(1e-6), gp_Vec(0, 0, 3)).Shape();
+  ShapeMeshOptions options;
+  options.size = 1.0;
+  options.keep_going = true;
+  const ShapeMeshResult result = mesh_shape(prism, options);
+  EXPECT_TRUE(result.contracted_edges.empty());
+  EXPECT_EQ(collapsed_quads(result.mesh), 0);
+  ASSERT_GE(result.mesh.refused_faces.size(), 1u);
+  ASSERT_LE(result.mesh.refused_faces.size(), 2u);
+  for (const RefusedFace& r : result.mesh.refused_faces) {
+    EXPECT_NE(r.reason.find("collapsed"), std::string::npos) << r.reason;
+  }
+  options.allow_inverted = true;
+  const ShapeMeshResult allowed = mesh_shape(prism, options);
+  EXPECT_TRUE(allowed.mesh.refused_faces.empty());
+  EXPECT_EQ(allowed.bad_quad_faces.size(), result.mesh.refused_faces.size());
+  EXPECT_GT(collapsed_quads(allowed.mesh), 0);
+}
+
+}  // namespace
+}  // namespace tquad
