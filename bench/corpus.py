@@ -48,8 +48,10 @@ runs, so that each process has a core, and its own default of all cores with one
                 when over 10 % of the nodes are, or tquad and FreeCAD count different
                 faces, the part is marked "face order mismatch" and only the own measure
                 is kept;
-    a quad is "bad" when a corner is <= 1e-6 by either measure; "worst" is the smaller of
-    the two measures' minimum;
+    a quad is "bad" when a corner is <= 1e-6 by either measure, or when it is collapsed:
+    its smallest corner area |e1 x e2| under 1/1000 of its largest (the Jacobian ratio: a
+    triangle in effect, whatever its angles); "worst" is the smaller of the two
+    measures' minimum;
   * Gmsh (compare_parts' child processes, for the divisors in both --divisors and
     --gmsh-divisors): Blossom = Mesh.Algorithm 6 + Blossom recombination, all-quad = the
     same + subdivision at 2H; the wall time of the whole child process is set against
@@ -490,11 +492,26 @@ def read_mesh_json(path):
     return points, quads, mesh["faces"]
 
 
+COLLAPSED_AREA_RATIO = 1e-3
+
+
+def collapsed_quads(points, quads):
+    """Per quad, whether its smallest corner area |e_next x e_prev| is under
+    COLLAPSED_AREA_RATIO of its largest (or all are zero)."""
+    if not len(quads):
+        return np.zeros(0, dtype=bool)
+    p = points[quads]                                  # (m, 4, 3)
+    areas = np.stack([np.linalg.norm(np.cross(p[:, (k + 1) % 4] - p[:, k], p[:, (k + 3) % 4] - p[:, k]), axis=1)
+                      for k in range(4)], axis=1)
+    low, high = areas.min(axis=1), areas.max(axis=1)
+    return ~(low >= COLLAPSED_AREA_RATIO * high) | (high == 0)
+
+
 def measure_mesh(path, shape, diagonal, surface_check, singular_sine, tquad_faces):
     """Measures every quad of a mesh JSON by both normals (the module docstring);
     tquad_faces is the number of faces tquad's report counts (meshed and refused).
 
-    Returns a dict: quads, bad, under_01, under_02, worst_own / mean_own, worst_surface /
+    Returns a dict: quads, bad, collapsed (counted in bad too), under_01, under_02, worst_own / mean_own, worst_surface /
     mean_surface (None when not measured), worst, surface ("measured", "not asked",
     "face order mismatch", or why not), off_surface_nodes, off_surface_faces, bad_faces
     {face: count}, projected_nodes and seconds (reading, own, surface)."""
@@ -556,9 +573,10 @@ def measure_mesh(path, shape, diagonal, surface_check, singular_sine, tquad_face
 
     own_min = own.min(axis=1) if len(quads) else np.zeros(0)
     both = own_min if surface is None else np.minimum(own_min, surface.min(axis=1))
-    bad = both <= BAD_CORNER
+    collapsed = collapsed_quads(points, quads)
+    bad = (both <= BAD_CORNER) | collapsed
     result.update({
-        "bad": int(bad.sum()), "under_01": int((both < 0.1).sum()), "under_02": int((both < 0.2).sum()),
+        "bad": int(bad.sum()), "collapsed": int(collapsed.sum()), "under_01": int((both < 0.1).sum()), "under_02": int((both < 0.2).sum()),
         "worst_own": float(own_min.min()) if len(quads) else None,
         "mean_own": float(own_min.mean()) if len(quads) else None,
         "worst_surface": float(surface.min()) if surface is not None else None,
@@ -1084,7 +1102,7 @@ def summary_lines(results, keys, gmsh_keys):
         t = face_totals(results, key)
         quads = sum(p["runs"][key]["measure"]["quads"] for p in results if tquad_ok(p["runs"].get(key)))
         bad = sum(p["runs"][key]["measure"]["bad"] for p in results if tquad_ok(p["runs"].get(key)))
-        out.append("D/%s: faces meshed %d of %d (%s); quads %d, with a corner <= 1e-6 %d."
+        out.append("D/%s: faces meshed %d of %d (%s); quads %d, bad (a corner <= 1e-6, or collapsed) %d."
                    % (key, t["meshed"], t["faces"], share(t["meshed"], t["faces"]), quads, bad))
     for key in keys:
         runs = [p["runs"][key]["measure"] for p in results if tquad_ok(p["runs"].get(key))]
@@ -1142,11 +1160,11 @@ def markdown(results, args, info, total_s, command):
     lines += ["", "## Faces", "", faces_section(results, keys), ""]
     lines += ["- " + line for line in refused_section(results, keys)] or ["- No face refused."]
     lines += ["",
-              "## Quads with a corner <= 1e-6 (by the quad's own normal or the surface's)", "",
+              "## Bad quads: a corner <= 1e-6 (by the quad's own normal or the surface's), or collapsed", "",
               bad_section(results, keys), "",
               "## Per part", "",
               "H = D / divisor, D the shape's bounding-box diagonal as tquad takes it (D/25 is its default). bad = quads with a corner "
-              "<= 1e-6 by either normal; <0.1, <0.2 = quads whose smaller measure is under that; worst and mean "
+              "<= 1e-6 by either normal, or collapsed (its smallest corner area |e1 x e2| under 1/1000 of its largest); <0.1, <0.2 = quads whose smaller measure is under that; worst and mean "
               "by the quad's own normal / by the surface's outer normal (%s). Sharpest corner: the smallest "
               "angle between boundary edges inside a face, on the CAD. Blossom: Gmsh %s, Mesh.Algorithm 6 + "
               "Blossom recombination, scaled Jacobian of its quads (own normal), triangles it left. Times: wall "
