@@ -509,7 +509,7 @@ def collapsed_quads(points, quads):
 
 def measure_mesh(path, shape, diagonal, surface_check, singular_sine, tquad_faces):
     """Measures every quad of a mesh JSON by both normals (the module docstring);
-    tquad_faces is the number of faces tquad's report counts (meshed and refused).
+    tquad_faces is the number of faces tquad's report counts (meshed, refused and absorbed).
 
     Returns a dict: quads, bad, collapsed (counted in bad too), under_01, under_02, worst_own / mean_own, worst_surface /
     mean_surface (None when not measured), worst, surface ("measured", "not asked",
@@ -658,6 +658,7 @@ def run_tquad(tquad, path, size, timeout, mesh_path, threads=0):
         "status": "ok", "quads": report["quads"], "meshed_faces": len(report["faces"]),
         "refused_faces": [{"face": f["face"], "code": f.get("code", "?"), "reason": f.get("reason", "")}
                           for f in report["refused_faces"]],
+        "absorbed_faces": [f["face"] for f in report.get("absorbed_faces", [])],
         "unsewn_edge_pairs": len(report.get("unsewn_edge_pairs", [])),
         "edge_size": report.get("edge_size"),
         "report_sj_min": quality.get("scaled_jacobian", {}).get("min"),
@@ -740,7 +741,7 @@ def part_job(spec):
             try:
                 run["measure"] = measure_mesh(mesh_path(divisor), shape, part["diagonal"], check,
                                               spec["singular_sine"],
-                                              tq["meshed_faces"] + len(tq["refused_faces"]))
+                                              faces_of(tq))
             except Exception as error:
                 run["measure"] = {"error": "%s: %s" % (type(error).__name__, str(error)[:300])}
             if not spec["keep_meshes"]:
@@ -864,10 +865,16 @@ def size_keys(results):
     return sorted(keys, key=float)
 
 
+def faces_of(tq):
+    """The faces tquad counts in a part: meshed, refused and absorbed (strips narrower than
+    0.004 of the size, with no quads of their own)."""
+    return tq["meshed_faces"] + len(tq["refused_faces"]) + len(tq.get("absorbed_faces", []))
+
+
 def face_totals(results, key):
-    """Per size: faces of all parts (FreeCAD's count), meshed, refused by code, and faces of
-    files tquad did not mesh at all."""
-    totals = {"faces": 0, "meshed": 0, "refused": 0, "codes": {}, "in_unmeshed_files": 0}
+    """Per size: faces of all parts (FreeCAD's count), meshed, refused by code, absorbed,
+    and faces of files tquad did not mesh at all."""
+    totals = {"faces": 0, "meshed": 0, "refused": 0, "absorbed": 0, "codes": {}, "in_unmeshed_files": 0}
     for part in results:
         run = part["runs"].get(key)
         if run is None:
@@ -875,8 +882,9 @@ def face_totals(results, key):
         tq = run["tquad"]
         faces = part.get("faces") or (part["manifest"] or {}).get("faces") or 0
         if tq["status"] == "ok":
-            faces = tq["meshed_faces"] + len(tq["refused_faces"])
+            faces = faces_of(tq)
             totals["meshed"] += tq["meshed_faces"]
+            totals["absorbed"] += len(tq.get("absorbed_faces", []))
             totals["refused"] += len(tq["refused_faces"])
             for f in tq["refused_faces"]:
                 totals["codes"][f["code"]] = totals["codes"].get(f["code"], 0) + 1
@@ -932,9 +940,8 @@ def notes(results):
             if tq["status"] != "ok":
                 continue
             m = run.get("measure", {})
-            if tq["meshed_faces"] + len(tq["refused_faces"]) != part.get("faces"):
-                out.append("%s: tquad counts %d faces, FreeCAD %s" % (
-                    where, tq["meshed_faces"] + len(tq["refused_faces"]), part.get("faces")))
+            if faces_of(tq) != part.get("faces"):
+                out.append("%s: tquad counts %d faces, FreeCAD %s" % (where, faces_of(tq), part.get("faces")))
             if tq["unsewn_edge_pairs"]:
                 out.append("%s: %d unsewn edge pair(s) (faces touching without a shared edge)"
                            % (where, tq["unsewn_edge_pairs"]))
@@ -999,11 +1006,12 @@ def faces_section(results, keys):
         t = face_totals(results, key)
         codes = ", ".join("%s %d" % (c, t["codes"][c]) for c in REFUSAL_CODES if c in t["codes"])
         codes += "".join(", %s %d" % (c, n) for c, n in t["codes"].items() if c not in REFUSAL_CODES)
-        read = t["meshed"] + t["refused"]
-        rows.append(["D/" + key, t["faces"], t["meshed"], t["refused"], codes.strip(", ") or "-",
-                     t["in_unmeshed_files"], share(t["meshed"], read), share(t["meshed"], t["faces"])])
-    return table(["size", "faces", "meshed", "refused", "refused by code", "in files not meshed",
-                  "meshed / faces of meshed files", "meshed / all faces"], rows)
+        read = t["meshed"] + t["refused"] + t["absorbed"]
+        rows.append(["D/" + key, t["faces"], t["meshed"], t["absorbed"], t["refused"], codes.strip(", ") or "-",
+                     t["in_unmeshed_files"], share(t["meshed"], read), share(t["meshed"] + t["absorbed"], t["faces"]),
+                     share(t["meshed"], t["faces"])])
+    return table(["size", "faces", "meshed", "absorbed", "refused", "refused by code", "in files not meshed",
+                  "meshed / faces of meshed files", "meshed or absorbed / all faces", "meshed / all faces"], rows)
 
 
 def refused_section(results, keys):
@@ -1062,7 +1070,7 @@ def part_rows(results, keys):
                 m = run.get("measure", {})
                 if "error" in m:
                     m = {}
-                cells += [tq["meshed_faces"] + len(tq["refused_faces"]), len(tq["refused_faces"]),
+                cells += [faces_of(tq), len(tq["refused_faces"]),
                           tq["quads"], m.get("bad", "-"), m.get("under_01", "-"), m.get("under_02", "-"),
                           "%s / %s" % (fmt(m.get("worst_own")), surface_cell(m, "worst_surface")),
                           "%s / %s" % (fmt(m.get("mean_own")), surface_cell(m, "mean_surface")), sharp_cell]
@@ -1102,8 +1110,10 @@ def summary_lines(results, keys, gmsh_keys):
         t = face_totals(results, key)
         quads = sum(p["runs"][key]["measure"]["quads"] for p in results if tquad_ok(p["runs"].get(key)))
         bad = sum(p["runs"][key]["measure"]["bad"] for p in results if tquad_ok(p["runs"].get(key)))
-        out.append("D/%s: faces meshed %d of %d (%s); quads %d, bad (a corner <= 1e-6, or collapsed) %d."
-                   % (key, t["meshed"], t["faces"], share(t["meshed"], t["faces"]), quads, bad))
+        out.append("D/%s: faces meshed %d of %d (%s), %d more absorbed (%s meshed or absorbed); quads %d, "
+                   "bad (a corner <= 1e-6, or collapsed) %d."
+                   % (key, t["meshed"], t["faces"], share(t["meshed"], t["faces"]), t["absorbed"],
+                      share(t["meshed"] + t["absorbed"], t["faces"]), quads, bad))
     for key in keys:
         runs = [p["runs"][key]["measure"] for p in results if tquad_ok(p["runs"].get(key))]
         nodes = sum(m["projected_nodes"] for m in runs)

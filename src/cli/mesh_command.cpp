@@ -29,6 +29,7 @@
 #include "io/svg_writer.h"
 #include "io/vtu_writer.h"
 #include "cli/cad_input.h"
+#include "occ/edge_contraction.h"
 #include "occ/shape_formats.h"
 
 namespace tquad {
@@ -117,7 +118,14 @@ void print_summary(std::ostream& out, const MeshCommand& command, const ShapeMes
           << "): meshed with other corners (" << fixed(search->chosen_worst, 3) << ")\n";
     }
   } else {
-    out << "  faces " << mesh.faces.size() << " meshed, " << mesh.refused_faces.size() << " refused\n";
+    out << "  faces " << mesh.faces.size() << " meshed, " << mesh.refused_faces.size() << " refused";
+    if (shape && !shape->absorbed_strips.empty()) {
+      out << ", " << shape->absorbed_strips.size() << " absorbed (strips under " << kContractedEdgeRatio
+          << " of the size wide, no quads of their own:";
+      for (const AbsorbedStrip& strip : shape->absorbed_strips) out << " " << strip.face;
+      out << ")";
+    }
+    out << "\n";
     for (const FaceMesh& f : mesh.faces) {
       out << "  face " << f.face << ": " << f.quad_count << " quads, template tree " << f.template_tree << "\n";
     }
@@ -310,6 +318,12 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
       }
       report["changed_edges"] = changes;
       report["contracted_edges"] = shape_result.contracted_edges;
+      nlohmann::ordered_json absorbed = nlohmann::ordered_json::array();
+      for (const AbsorbedStrip& strip : shape_result.absorbed_strips) {
+        absorbed.push_back({{"face", strip.face}, {"width", strip.width}, {"kept_edge", strip.kept},
+                            {"merged_edge", strip.merged}});
+      }
+      report["absorbed_faces"] = absorbed;
       nlohmann::ordered_json unsewn = nlohmann::ordered_json::array();
       for (const UnsewnEdgePair& p : shape_result.unsewn_edges) unsewn.push_back({p.first, p.second});
       report["unsewn_edge_pairs"] = unsewn;

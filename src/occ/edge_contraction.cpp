@@ -58,7 +58,8 @@ bool contractible_in_face(const ShapeIndex& index, int f, int e, const std::vect
 }  // namespace
 
 std::vector<int> edges_to_contract(const ShapeIndex& index, const std::vector<double>& lengths,
-                                   const std::vector<char>& usable, double size) {
+                                   const std::vector<char>& usable, double size,
+                                   const std::vector<char>& strips) {
   const double bound = kContractedEdgeRatio * size;
   const int edges = index.edge_count();
   std::vector<char> is_short(edges, 0);
@@ -87,8 +88,9 @@ std::vector<int> edges_to_contract(const ShapeIndex& index, const std::vector<do
       if (first.IsNull() || last.IsNull() || first.IsSame(last)) continue;
       bool contractible = !index.faces_of_edge(e).empty();
       for (int f : index.faces_of_edge(e)) {
+        const bool strip = !strips.empty() && strips[f];
         contractible = contractible && !BRep_Tool::IsClosed(edge, index.face(f)) &&
-                       contractible_in_face(index, f, e, is_short, bound);
+                       (strip || contractible_in_face(index, f, e, is_short, bound));
       }
       if (!contractible) continue;
       const int a = group[index.vertex_index(first)], b = group[index.vertex_index(last)];

@@ -28,8 +28,11 @@ namespace tquad {
 constexpr double kContractedEdgeRatio = 4e-3;
 
 // The edges to contract at element size `size`. lengths: each edge's arc length
-// (edge_segment_counts); usable: per edge, or empty for all.
+// (edge_segment_counts); usable: per edge, or empty for all; strips: per face, or
+// empty for none, the faces absorbed as strips (strip_absorption.h), which do not
+// keep their end edges from contracting.
 std::vector<int> edges_to_contract(const ShapeIndex& index, const std::vector<double>& lengths,
-                                   const std::vector<char>& usable, double size);
+                                   const std::vector<char>& usable, double size,
+                                   const std::vector<char>& strips = {});
 
 }  // namespace tquad

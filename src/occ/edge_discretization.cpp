@@ -254,12 +254,26 @@ std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vect
       spacing = arc_length_spacing(edge, e, n, cusp);
     }
     out.params = spacing.params;
+    if (index.merged_into(e).edge >= 0) continue;  // its nodes are another edge's, below
     out.nodes.push_back(index.vertex_index(first));
     for (const Vec3& p : spacing.inner_points) {
       out.nodes.push_back(static_cast<NodeId>(nodes.size()));
       nodes.push_back(p);
     }
     out.nodes.push_back(index.vertex_index(last));
+  }
+  // A merged edge (strip_absorption.h) takes the nodes of the edge it is merged into,
+  // which the interval assignment gave the same count.
+  for (int e = 0; e < index.edge_count(); ++e) {
+    const ShapeIndex::MergedInto into = index.merged_into(e);
+    if (into.edge < 0 || segments[e] <= 0) continue;
+    if (segments[into.edge] != segments[e]) {
+      throw std::logic_error("edge " + std::to_string(e) + " is merged into edge " + std::to_string(into.edge) +
+                             " but has " + std::to_string(segments[e]) + " segments to its " +
+                             std::to_string(segments[into.edge]));
+    }
+    result[e].nodes = result[into.edge].nodes;
+    if (into.reversed) std::reverse(result[e].nodes.begin(), result[e].nodes.end());
   }
   return result;
 }

@@ -213,6 +213,12 @@ IntervalReport assign_shape_intervals(const ShapeIndex& index, const std::vector
     if (segments[a] <= 0 || segments[b] <= 0) continue;
     if (near_enough_to_chain(goal(a), goal(b))) sets.join(a, b);
   }
+  // An edge merged into another (strip_absorption.h) shares its nodes: one chain,
+  // whatever their goals.
+  for (int e = 0; e < edges; ++e) {
+    const int into = index.merged_into(e).edge;
+    if (into >= 0 && segments[e] > 0 && segments[into] > 0) sets.join(e, into);
+  }
   std::vector<std::vector<int>> members(edges);
   for (int e = 0; e < edges; ++e) if (segments[e] > 0) members[sets.root(e)].push_back(e);
   IntervalReport report;

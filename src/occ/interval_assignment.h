@@ -71,7 +71,8 @@ void raise_two_edge_loop_floors(const ShapeIndex& index, const std::vector<char>
 // one count that best fits all its edges' length / size (at least every floor), so
 // those faces are mapped grids (T0, the best elements) and even by construction;
 // bands one segment wide get equal long sides (band_balance.h); the other faces are
-// then made even by make_faces_even, changing whole chains or single edges.
+// then made even by make_faces_even, changing whole chains or single edges. An edge
+// merged into another (ShapeIndex::merged_into) is chained to it unconditionally.
 struct IntervalReport {
   std::vector<IntervalChange> changes;  // against the counts given
   int chains = 0;                       // chains of two or more edges

@@ -36,6 +36,8 @@ const TopoDS_Edge& ShapeIndex::edge(int i) const { return TopoDS::Edge(edges_(i 
 const TopoDS_Vertex& ShapeIndex::vertex(int i) const { return TopoDS::Vertex(vertices_(i + 1)); }
 
 void ShapeIndex::contract_edges(const std::vector<int>& edges) {
+  contracted_.clear();
+  joined_.clear();
   if (edges.empty()) return;
   contracted_.assign(edges_.Extent(), 0);
   std::vector<int> parent(vertices_.Extent());
@@ -53,6 +55,11 @@ void ShapeIndex::contract_edges(const std::vector<int>& edges) {
   }
   joined_.resize(parent.size());
   for (std::size_t v = 0; v < parent.size(); ++v) joined_[v] = root(static_cast<int>(v));
+}
+
+void ShapeIndex::merge_edge(int merged, int kept, bool reversed) {
+  if (merged_.empty()) merged_.assign(edges_.Extent(), MergedInto{});
+  merged_[merged] = MergedInto{kept, reversed};
 }
 
 std::vector<int> ShapeIndex::outer_wire_vertices(int i) const {

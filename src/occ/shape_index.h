@@ -36,10 +36,19 @@ class ShapeIndex {
   }
 
   // Contracts `edges` (edge_contraction.h): each one's two vertices are joined into one
-  // node and the edge is no side of any face, with no segment. Called once, before any
-  // count or node is made.
+  // node and the edge is no side of any face, with no segment. Called before any
+  // count or node is made; a later call replaces the earlier one's contraction.
   void contract_edges(const std::vector<int>& edges);
   bool contracted(int edge) const { return !contracted_.empty() && contracted_[edge]; }
+
+  // Merges edge `merged` into edge `kept` (strip_absorption.h): merged's nodes are
+  // kept's, in reverse order when `reversed`; merged keeps its own curve parameters.
+  void merge_edge(int merged, int kept, bool reversed);
+  struct MergedInto {
+    int edge = -1;  // -1: not merged
+    bool reversed = false;
+  };
+  MergedInto merged_into(int edge) const { return merged_.empty() ? MergedInto{} : merged_[edge]; }
 
   // Indices of the distinct faces an edge bounds (a seam edge bounds its face once).
   const std::vector<int>& faces_of_edge(int edge) const { return faces_of_edge_[edge]; }
@@ -53,6 +62,7 @@ class ShapeIndex {
   std::vector<std::vector<int>> faces_of_edge_;
   std::vector<int> joined_;        // per vertex, its group's index (empty: none joined)
   std::vector<char> contracted_;   // per edge (empty: none contracted)
+  std::vector<MergedInto> merged_;  // per edge (empty: none merged)
 };
 
 }  // namespace tquad

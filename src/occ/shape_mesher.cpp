@@ -1,4 +1,5 @@
 #include "occ/edge_contraction.h"
+#include "occ/strip_absorption.h"
 #include "occ/shape_mesher.h"
 
 #include "occ/band_alignment.h"
@@ -262,10 +263,22 @@ class ShapeMeshContext {
     for (const auto& [f, why] : damaged_) if (f >= 0 && f < index_.face_count()) to_mesh_[f] = 0;
     edge_floor_ = edge_turn_minimums(index_, usable);
     sized_ = edge_segment_counts(index_, result_.size, edge_floor_, lengths_, usable);
-    // Edges far shorter than the size become one node (edge_contraction.h), before
+    // Faces narrower than the contraction bound are absorbed (strip_absorption.h) and
+    // edges far shorter than the size become one node (edge_contraction.h), before
     // any face's sides are counted.
-    result_.contracted_edges = edges_to_contract(index_, lengths_, usable, result_.size);
-    index_.contract_edges(result_.contracted_edges);
+    std::vector<char> whole(index_.face_count(), 1);
+    for (const auto& [f, why] : damaged_) if (f >= 0 && f < index_.face_count()) whole[f] = 0;
+    result_.absorbed_strips = contract_and_absorb(index_, strips_to_absorb(index_, whole, lengths_, usable, result_.size),
+                                                  lengths_, usable, result_.size, result_.contracted_edges);
+    const bool any_requested = std::count(to_mesh_.begin(), to_mesh_.end(), 1) > 0;
+    for (const AbsorbedStrip& strip : result_.absorbed_strips) meshed_[strip.face] = to_mesh_[strip.face] = 0;
+    if (any_requested && std::count(meshed_.begin(), meshed_.end(), 1) == 0) {
+      char text[160];
+      std::snprintf(text, sizeof text, "face %d is a strip %.3g wide, under %g of the size %g: it is absorbed into "
+                    "its neighbours' edges and has no quads of its own", result_.absorbed_strips.front().face,
+                    result_.absorbed_strips.front().width, kContractedEdgeRatio, result_.size);
+      throw InputError(text);
+    }
     for (int e = 0; e < index_.edge_count(); ++e) {
       if (index_.contracted(e)) edge_floor_[e] = sized_[e] = 0;
     }
@@ -277,6 +290,10 @@ class ShapeMeshContext {
     for (int f = 0; f < index_.face_count(); ++f) {
       if (!to_mesh_[f]) continue;
       for (TopExp_Explorer it(index_.face(f), TopAbs_EDGE); it.More(); it.Next()) needed_[index_.edge_index(it.Current())] = 1;
+    }
+    // A merged edge's nodes are those of the edge it is merged into.
+    for (const AbsorbedStrip& strip : result_.absorbed_strips) {
+      needed_[strip.kept] = needed_[strip.kept] || needed_[strip.merged];
     }
     minimum_.assign(index_.edge_count(), 0);
     for (const UnsewnEdgePair& pair : unsewn_edge_pairs(index_)) {

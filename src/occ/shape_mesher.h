@@ -27,6 +27,7 @@
 #include "core/mesher.h"
 #include "core/shape_mesh.h"
 #include "occ/interval_assignment.h"
+#include "occ/strip_absorption.h"
 #include "occ/unsewn_edges.h"
 
 namespace tquad {
@@ -124,6 +125,9 @@ struct ShapeMeshResult {
   int quartered_pole_rims = 0;           // disks around a pole given a multiple of 4 on their rim
   // Edges far shorter than the size, each made one node (edge_contraction.h).
   std::vector<int> contracted_edges;
+  // Faces narrower than that bound everywhere, absorbed: no quads, their two long
+  // sides one row of nodes (strip_absorption.h).
+  std::vector<AbsorbedStrip> absorbed_strips;
   // Edges of meshed faces that lie on each other without being one edge (the file's
   // faces are not sewn there): the mesh has a crack along each (unsewn_edges.h).
   std::vector<UnsewnEdgePair> unsewn_edges;

@@ -256,6 +256,16 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
   py::list contracted;
   for (int e : result.contracted_edges) contracted.append(e);
   out["contracted_edges"] = contracted;
+  py::list absorbed;
+  for (const AbsorbedStrip& strip : result.absorbed_strips) {
+    py::dict d;
+    d["face"] = strip.face;
+    d["width"] = strip.width;
+    d["kept_edge"] = strip.kept;
+    d["merged_edge"] = strip.merged;
+    absorbed.append(d);
+  }
+  out["absorbed_faces"] = absorbed;
   py::list bad_faces;
   for (const auto& [face, count] : result.bad_quad_faces) {
     py::dict d;

@@ -19,6 +19,7 @@
 
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepOffsetAPI_ThruSections.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <gp_Vec.hxx>
 #include <TopExp.hxx>
@@ -691,19 +692,26 @@ TEST_F(KeepGoing, WithItTheOtherFacesAreMeshedAndTheRefusedListed) {
 // ---- collapsed quads named by face ----------------------------------------------------
 
 TEST_F(ShapeCli, CollapsedQuadsRefuseTheirFaceUnlessAllowed) {
-  // A 10 x 10 x 3 block with one vertical edge cut by a face 1.4e-6 wide: a strip
-  // far narrower than the size, meshed as one row of thin rectangles (not collapsed:
-  // their Jacobian is even). Its ends cannot be contracted (the strip would fold), so
-  // a cap's quad beside them is a triangle in effect (collapsed): its face is
-  // refused, named, exit 2; --allow-inverted keeps it, listed by face.
-  BRepBuilderAPI_MakePolygon outline;
-  for (const gp_Pnt& p : {gp_Pnt(0, 0, 0), gp_Pnt(10, 0, 0), gp_Pnt(10, 10 - 1e-6, 0), gp_Pnt(10 - 1e-6, 10, 0),
-                          gp_Pnt(0, 10, 0)}) {
-    outline.Add(p);
-  }
-  outline.Close();
-  const TopoDS_Shape part =
-      BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(outline.Wire(), true).Face(), gp_Vec(0, 0, 3)).Shape();
+  // A 10 x 10 block, 3 high, lofted between a square cut at one corner by 1.4e-6 at
+  // the bottom and by 0.0071 at the top: the cut's side face tapers from far under
+  // the contraction bound (0.004 at size 1) to over it. Its top edge is a side of its
+  // own (no strip to absorb, strip_absorption.h), and its sides run too close for its
+  // bottom edge to be contracted (edge_contraction.h): the quads beside that edge
+  // are triangles in effect (collapsed). Their face is refused, named, exit 2;
+  // --allow-inverted keeps it, listed by face.
+  const auto outline = [](double cut, double z) {
+    BRepBuilderAPI_MakePolygon polygon;
+    for (const gp_Pnt& p : {gp_Pnt(0, 0, z), gp_Pnt(10, 0, z), gp_Pnt(10, 10 - cut, z), gp_Pnt(10 - cut, 10, z),
+                            gp_Pnt(0, 10, z)}) {
+      polygon.Add(p);
+    }
+    polygon.Close();
+    return polygon.Wire();
+  };
+  BRepOffsetAPI_ThruSections loft(true, true);
+  loft.AddWire(outline(1e-6, 0));
+  loft.AddWire(outline(5e-3, 3));
+  const TopoDS_Shape part = loft.Shape();
   TopTools_IndexedMapOfShape faces;
   TopExp::MapShapes(part, TopAbs_FACE, faces);
   const std::string file = path("cut_block.brep");
@@ -734,6 +742,39 @@ TEST_F(ShapeCli, CollapsedQuadsRefuseTheirFaceUnlessAllowed) {
   EXPECT_EQ(collapsed_faces, bad_faces);
   EXPECT_NE(r.err.find("quads are collapsed"), std::string::npos) << r.err;
   EXPECT_TRUE(report["contracted_edges"].empty());
+}
+
+TEST_F(ShapeCli, AStripNarrowerThanTheBoundIsAbsorbedAndListed) {
+  // A 10 x 10 x 3 block with one vertical edge cut by a face 1.4e-6 wide: a strip
+  // (strip_absorption.h), absorbed at size 1. Exit 0, the report lists it with its
+  // width, the summary names it, and the other faces are meshed.
+  BRepBuilderAPI_MakePolygon outline;
+  for (const gp_Pnt& p : {gp_Pnt(0, 0, 0), gp_Pnt(10, 0, 0), gp_Pnt(10, 10 - 1e-6, 0), gp_Pnt(10 - 1e-6, 10, 0),
+                          gp_Pnt(0, 10, 0)}) {
+    outline.Add(p);
+  }
+  outline.Close();
+  const TopoDS_Shape part =
+      BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(outline.Wire(), true).Face(), gp_Vec(0, 0, 3)).Shape();
+  const std::string file = path("cut_block.brep");
+  ASSERT_TRUE(BRepTools::Write(part, file.c_str()));
+  const RunResult r = run_tquad({"mesh", file, "--size", "1", "-o", path("cut.vtu"), "--report", "json"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json report = json::parse(r.out);
+  ASSERT_EQ(report["absorbed_faces"].size(), 1u);
+  const json& strip = report["absorbed_faces"][0];
+  EXPECT_NEAR(strip["width"].get<double>(), 1e-6 * std::sqrt(2.0), 1e-9);
+  EXPECT_NE(strip["kept_edge"], strip["merged_edge"]);
+  EXPECT_EQ(report["faces"].size(), 6u);
+  for (const json& f : report["faces"]) EXPECT_NE(f["face"], strip["face"]);
+  EXPECT_EQ(report["contracted_edges"].size(), 2u);
+  EXPECT_EQ(report["quality"]["collapsed"], 0);
+  const RunResult summary = run_tquad({"mesh", file, "--size", "1", "-o", path("cut.vtu")});
+  ASSERT_EQ(summary.exit_status, 0) << summary.err;
+  EXPECT_NE(summary.out.find("1 absorbed (strips under 0.004 of the size wide, no quads of their own: " +
+                             std::to_string(strip["face"].get<int>()) + ")"),
+            std::string::npos)
+      << summary.out;
 }
 
 }  // namespace

@@ -177,20 +177,24 @@ class MeshObjectTest(unittest.TestCase):
 
     def test_no_collapsed_quad_reaches_freecad(self):
         """A box with one edge chamfered 1e-4 (a strip far narrower than the size): the
-        strip is one row of thin rectangles, not collapsed; a face keeping a collapsed
-        quad (a triangle in effect) would be refused with the reason, since FreeCAD
-        offers no way to allow bad quads: none reaches the FEM mesh."""
+        strip is absorbed (no elements of its own, its ends contracted, the faces beside
+        it sharing its nodes), so no face keeps a collapsed quad (a triangle in effect;
+        FreeCAD offers no way to allow bad quads): none reaches the FEM mesh, and the
+        user reads which face was absorbed, in FreeCAD's names."""
         from freecad.templatequad import meshing
         box = Part.makeBox(10, 10, 10)
         shape = box.makeChamfer(1e-4, [box.Edges[0]])
         strip = [i for i, f in enumerate(shape.Faces) if f.Area < 0.01]
         self.assertEqual(len(strip), 1)
         mesh = meshing.mesh_shape(shape, size=2.0, keep_going=True)
-        for refused in mesh.refused_faces:
-            self.assertIn("collapsed", refused["reason"])
-        self.assertNotIn(strip[0], [r["face"] for r in mesh.refused_faces])
+        self.assertEqual(mesh.refused_faces, [])
+        self.assertEqual([a["face"] for a in mesh.absorbed_faces], strip)
+        self.assertEqual(len(mesh.faces), len(shape.Faces) - 1)
         self.assertEqual(mesh.quality["collapsed"], 0)
         self.assertIn("collapsed 0", meshing.quality_summary(mesh))
+        self.assertTrue(meshing.absorbed_message(mesh).startswith(f"Face{strip[0] + 1} narrower"),
+                        meshing.absorbed_message(mesh))
+        self.assertEqual(meshing.absorbed_message(meshing.mesh_shape(box, size=2.0)), "")
 
     def test_box_is_all_quads_and_equals_tquad(self):
         from freecad.templatequad import make_mesh

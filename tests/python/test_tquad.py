@@ -73,6 +73,7 @@ class MeshShapeTest(unittest.TestCase):
         m = tquad.mesh_shape(os.path.join(SHAPES, "filleted_bracket.brep"))
         self.assertEqual(len(m.faces), 9, "every face of the bracket meshed")
         self.assertEqual(m.refused_faces, [], "nothing refused")
+        self.assertEqual(m.absorbed_faces, [], "no face narrower than 0.004 of the size")
         self.assertTrue(all(c == 2 for c in edge_uses(m.quads).values()), "closed solid: watertight")
         self.assertEqual(sum(f["quad_count"] for f in m.faces), len(m.quads), "face ranges cover the quads")
         self.assertGreater(m.edge_size, 0, "default size reported")

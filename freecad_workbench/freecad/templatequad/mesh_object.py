@@ -255,6 +255,9 @@ class TemplateQuadMesh(StatelessProxy):
         unsewn = meshing.unsewn_warning(obj.UnsewnEdges, obj.Sew)
         if unsewn:
             FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {unsewn}\n")
+        absorbed = meshing.absorbed_message(mesh)
+        if absorbed:
+            FreeCAD.Console.PrintMessage(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {absorbed}\n")
 
     def _remember_meshed_inputs(self, obj):
         """The inputs the current mesh was made with (restored by a cancelled re-mesh)."""

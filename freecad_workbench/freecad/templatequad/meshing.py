@@ -253,6 +253,17 @@ def unsewn_warning(pairs: int, sew: bool) -> str:
             f"are not sewn there): the mesh is not connected along them{advice}")
 
 
+def absorbed_message(mesh) -> str:
+    """absorbed_message(): what a user reads about faces absorbed as strips ("" for
+    none): they have no elements of their own, so a constraint on them alone finds
+    no nodes, and their neighbours meet across them."""
+    faces = [f"Face{a['face'] + 1}" for a in getattr(mesh, "absorbed_faces", [])]
+    if not faces:
+        return ""
+    return (f"{', '.join(faces)} narrower than 0.004 of the element size everywhere: absorbed "
+            f"with no elements of their own (the faces beside them share their nodes)")
+
+
 def template_tree_lines(mesh) -> List[str]:
     """template_tree_lines(): "FaceN: <tree> (<count> quads)" per meshed face."""
     return [f"Face{f['face'] + 1}: {f['template_tree']} ({f['quad_count']} quads)"

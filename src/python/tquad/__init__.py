@@ -97,6 +97,11 @@ class Mesh:
         contracted_edges: for a shape, the edges far shorter than the size (under
             0.004 of it) whose two ends were made one node: a quad beside such an
             edge would be a triangle in effect.
+        absorbed_faces: for a shape, the faces narrower than that everywhere (a
+            strip: two long sides, short ends), which get no quads of their own:
+            their ends are contracted and their two long sides share one row of
+            nodes, so the faces beside them meet; dicts ``face``, ``width``,
+            ``kept_edge``, ``merged_edge``.
         bad_quad_faces: for a shape meshed with ``allow_inverted=True``, the faces
             kept with inverted, degenerate, folded or collapsed quads (a corner's
             scaled Jacobian at or below 1e-6 against the surface normal or the
@@ -119,6 +124,7 @@ class Mesh:
         self.unsewn_edge_pairs: List[Tuple[int, int]] = data.get("unsewn_edge_pairs", [])
         self.sewn_edges: int = data.get("sewn_edges", 0)
         self.contracted_edges: List[int] = data.get("contracted_edges", [])
+        self.absorbed_faces: List[dict] = data.get("absorbed_faces", [])
         self.bad_quad_faces: List[dict] = data.get("bad_quad_faces", [])
         self.collapsed_quad_faces: List[dict] = data.get("collapsed_quad_faces", [])
         self.read_warnings: List[str] = data.get("read_warnings", [])

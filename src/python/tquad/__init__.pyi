@@ -21,6 +21,7 @@ class Mesh:
     unsewn_edge_pairs: List[Tuple[int, int]]
     sewn_edges: int
     contracted_edges: List[int]
+    absorbed_faces: List[dict]
     bad_quad_faces: List[dict]
     collapsed_quad_faces: List[dict]
     read_warnings: List[str]
