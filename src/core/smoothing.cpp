@@ -62,6 +62,10 @@ constexpr double kSumGain = 1e-3;
 // nodes, leaving quads with a near-zero scaled Jacobian where there had been none.
 constexpr double kShortEdgeRatio = 0.1;
 
+// A move that opens a collapsed quad is taken even where it lowers the worst corner
+// around the node, down to this.
+constexpr double kCollapseTradeFloor = 0.02;
+
 // A corner as the smoother judges it: the lower of its scaled Jacobian against the
 // surface normals and in the quad's own plane (its diagonals' normal, where a shell
 // element's Jacobian is taken). They part on a quad spanning a tight curve; with the
@@ -84,8 +88,10 @@ struct LocalQuality {
   bool improves_on(const LocalQuality& before) const {
     if (collapsed > before.collapsed) return false;
     if (edge_ratio < kShortEdgeRatio && edge_ratio < before.edge_ratio) return false;
-    // Fewer collapsed quads is a gain of its own, if the worst corner holds.
-    if (collapsed < before.collapsed && worst >= before.worst) return true;
+    // Fewer collapsed quads is a gain of its own, if the worst corner holds or stays
+    // over kCollapseTradeFloor: a collapsed quad refuses its face, a sharp corner
+    // does not.
+    if (collapsed < before.collapsed && (worst >= before.worst || worst > kCollapseTradeFloor)) return true;
     // Around a collapsed quad any gain counts: small steps are what opens it up.
     const double needed =
         before.collapsed > 0 ? 1e-12 : kWorstGain * std::max(std::abs(before.worst), kWorstGainFloor);
@@ -227,8 +233,9 @@ CornerScan scan_corners(const std::vector<Quad>& quads, int fixed, const Nodes& 
   for (const Quad& q : quads) {
     const QuadCorners c = corners_of(q, nodes);
     scan.inverted += inverted_corners(c);
+    // A collapsed quad's angles can all be sound (is_collapsed): its nodes move too.
     for (int j = 0; j < 4; ++j) {
-      if (!(judged_corner(c, j) < threshold)) continue;
+      if (!c.collapsed && !(judged_corner(c, j) < threshold)) continue;
       for (int k : decided_by(j)) scan.deciding[q[k]] = true;  // the nodes deciding corner j
     }
   }
@@ -513,11 +520,21 @@ class Smoother {
 
   // Eight directions, steps from a quarter of the shortest edge around the node
   // halving down to 1/64 of it, at most kStepsPerSize moves per step size.
+  // Steps from a quarter of the shortest edge around the node down to 1/64 of it;
+  // around a collapsed quad, whose shortest edge is the one that collapsed (a
+  // millionth of the others), from a quarter of the longest down to 1/4096 of it.
   bool compass_search(int n, LocalQuality& best) {
-    const double shortest = shortest_edge_around(n);
+    double shortest = INFINITY, longest = 0;
+    for_each_neighbour(n, [&](NodeId other) {
+      const double d = distance(nodes_.param(n), nodes_.param(other));
+      shortest = std::min(shortest, d);
+      longest = std::max(longest, d);
+    });
     if (!(shortest > 0) || !std::isfinite(shortest)) return false;
+    const double from = best.collapsed > 0 ? 0.25 * longest : 0.25 * shortest;
+    const double down_to = best.collapsed > 0 ? std::max(shortest / 64, longest / 4096) : shortest / 64;
     bool moved = false;
-    for (double step = 0.25 * shortest; step > shortest / 64; step *= 0.5) {
+    for (double step = from; step > down_to; step *= 0.5) {
       for (int moves = 0, improved = 1; improved && moves < kStepsPerSize; ++moves) {
         improved = 0;
         const Vec3 start = nodes_.param(n);

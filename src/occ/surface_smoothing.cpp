@@ -97,7 +97,7 @@ void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<
   // from the nodes with a corner under it), and there is no doublet (a doublet's
   // node has a corner of 180 degrees or more). Without this return, large mapped
   // faces with every corner good spent time here for nothing.
-  if (mesh.worst_corner >= options.good_enough) return;
+  if (mesh.worst_corner >= options.good_enough && mesh.collapsed == 0) return;
   const std::size_t fixed = mesh.boundary_nodes.size();
   if (mesh.param.size() != fixed + mesh.interior.size()) return;  // not measured on the surface
   const BRepAdaptor_Surface surface(face);
