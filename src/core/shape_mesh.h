@@ -31,6 +31,7 @@ struct FaceMesh {
   std::int64_t first_quad = 0;
   std::int64_t quad_count = 0;
   std::optional<CornerSearch> corner_search;  // set by --corners best, or after an inverted quad
+  std::string route;  // the face route that made its mesh (face_route.cpp's registry); empty for a boundary
 };
 
 struct RefusedFace {
@@ -85,7 +86,7 @@ inline ShapeMesh single_face_mesh(QuadMesh&& mesh) {
   ShapeMesh shape;
   shape.nodes = std::move(mesh.nodes);
   shape.quads = std::move(mesh.quads);
-  shape.faces.push_back({0, mesh.template_tree, 0, static_cast<std::int64_t>(shape.quads.size()), std::nullopt});
+  shape.faces.push_back({0, mesh.template_tree, 0, static_cast<std::int64_t>(shape.quads.size()), std::nullopt, ""});
   return shape;
 }
 

@@ -32,6 +32,7 @@ nlohmann::ordered_json mesh_report_json(const ShapeMesh& mesh, const QualitySumm
     nlohmann::ordered_json face;
     face["face"] = f.face;
     face["template_tree"] = f.template_tree;
+    if (!f.route.empty()) face["route"] = f.route;
     if (f.corner_search) {
       const CornerSearch& c = *f.corner_search;
       nlohmann::ordered_json search;

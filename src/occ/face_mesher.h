@@ -30,6 +30,7 @@ struct FaceMeshResult {
   std::vector<Quad> quads;
   std::vector<Vec3> interior;
   std::string template_tree;
+  std::string route;             // the face route that made it (face_route.cpp's registry)
   bool used_projection = false;  // the 3D fallback was used
   long long inverted = 0;        // quads still inverted after repair
   // Quads unfit for analysis (is_bad_quad): inverted, degenerate, folded or collapsed.

@@ -195,160 +195,265 @@ void refuse_bad_quads(const FaceMeshResult& mesh, const std::string& name, const
                            mesh.quads.size(), has_quad_over_curvature(mesh));
 }
 
-// The face's mesh, the one place where the algorithm per face is chosen:
-//   - no hole: the templates on each corner choice (face_corners.h), and for a disk
-//     (one smooth loop) the disk's O-grid (disk_o_grid.h);
+// What a route sees of the face, and what the routes leave for the chooser after
+// them (the corner sets tried, the decomposition's other variants and its searched
+// patches).
+struct RouteContext {
+  RouteContext(const ShapeIndex& index, int f, const FaceBoundary& boundary, const PoleSector* sector,
+               const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size)
+      : index(index), f(f), boundary(boundary), sector(sector), nodes(nodes), options(options), size(size) {}
+  const ShapeIndex& index;
+  int f;
+  const FaceBoundary& boundary;
+  const PoleSector* sector;  // a cone's tip, when the face is a disk around it
+  const std::vector<Vec3>& nodes;
+  const ShapeMeshOptions& options;
+  double size;
+  bool pole = false;          // a degenerate edge or a polar chart
+  bool user_corners = false;  // the user gave this face's corners: an instruction
+  bool decompose = false;     // the decomposition may be tried
+  std::vector<std::vector<int>> natural_corners;
+  std::vector<FaceMeshResult> other_decompositions;
+  std::optional<FaceMeshResult> patches_searched;
+  bool patches_tried = false;
+};
+
+// The candidates of the routes, ranked by one order (better_face_mesh: fewer bad
+// quads, fewer inverted, fewer collapsed, then the better worst corner), and the last
+// refusal with its code (internal: the mesher failed).
+class Candidates {
+ public:
+  // The route whose meshes keep() takes now (FaceMeshResult::route).
+  void proposing(const char* route) { route_ = route; }
+  // Whether r became the best.
+  bool keep(FaceMeshResult&& r) {
+    r.route = route_;
+    if (best_ && !better_face_mesh(r, *best_)) return false;
+    best_ = std::move(r);
+    return true;
+  }
+  void refused(const std::exception& e) {
+    refusal_ = e.what();
+    code_ = refusal_code_of(e);
+  }
+  std::optional<FaceMeshResult>& best() { return best_; }
+  const std::optional<FaceMeshResult>& best() const { return best_; }
+  const std::string& refusal() const { return refusal_; }
+  RefusalCode code() const { return code_; }
+
+ private:
+  std::optional<FaceMeshResult> best_;
+  const char* route_ = "";
+  std::string refusal_;
+  RefusalCode code_ = RefusalCode::cannot_mesh;
+};
+
+// A route: when it applies, and how it proposes meshes (Candidates::keep). It says
+// it cannot mesh the face by throwing InputError (FaceRefusalError with its code);
+// its refusal is noted always, or only while no route has a mesh (the routes offered
+// besides a mesh). Any other exception is a broken invariant, caught by no route:
+// mesh_one_face refuses the face as an internal failure, named in the report. A route
+// `alone` is the face's one route when it applies, its mesh kept as it is.
+enum class Refusal { noted, noted_without_mesh };
+struct FaceRoute {
+  const char* name;
+  bool (*applies)(const RouteContext&, const Candidates&);
+  void (*propose)(RouteContext&, Candidates&);
+  Refusal refusal;
+  bool alone;
+};
+
+// The decomposition with its poor patches' corners searched (corner_search.h).
+void search_patches(RouteContext& c) {
+  c.patches_tried = true;
+  MeshOptions searching = c.options.templates;
+  searching.search_patch_corners = true;
+  try {
+    c.patches_searched = std::move(mesh_face_decomposed(c.index.face(c.f), c.f, c.boundary, c.nodes,
+                                                        c.index.vertex_count(), c.size, searching)
+                                       .front());
+    c.patches_searched->route = "decomposition, patch corners searched";
+  } catch (const InputError&) {  // the decomposition without the search stands
+  }
+}
+
+// The face routes in the order they are offered (a tie keeps the earlier mesh):
+//   - closed around two poles (a full sphere): the cube sphere (pole_to_pole.h), the
+//     one layout without a corner of 180 degrees at a pole; alone;
 //   - one hole: a structured ring when both loops have the same count
 //     (mapped_ring.h), and the O-grid of two halves (o_grid.h, face_decomposed.h);
-//   - more holes, or when the above leave inverted quads or a worst corner under
-//     kGoodEnoughCorner: the face decomposition (face_decomposed.h), any outline;
-//   - a disk around a pole: polar templates (no decomposition), and a cone's tip as
-//     the apex of its flattened sector (pole_sector);
-//   - closed around two poles (a full sphere): the cube sphere (pole_to_pole.h).
-// The best mesh is kept and smoothed on the surface; bad quads that remain (inverted,
-// degenerate or folded: is_bad_quad) refuse the face unless allow_inverted
-// (never a silent bad mesh).
-// A route says it cannot mesh the face by throwing InputError (FaceRefusalError with
-// its code); any other exception is a broken invariant, caught by no route here:
-// mesh_one_face refuses the face as an internal failure, named in the report, rather
-// than another route hiding it.
+//   - no hole: the templates on each corner choice (face_corners.h); around a pole,
+//     polar templates and a cone's tip as the apex of its flattened sector
+//     (pole_sector); a pole on the rim (a sphere's lune), the disk's O-grid in space;
+//     a disk (one smooth loop) the disk's O-grid (disk_o_grid.h);
+//   - more holes, or when the above leave bad quads or a worst corner under
+//     kGoodEnoughCorner: the face decomposition (face_decomposed.h), any outline.
+// Adding a route is a function pair and a row here.
+const std::vector<FaceRoute>& face_routes() {
+  static const std::vector<FaceRoute> routes{
+      {"cube sphere", [](const RouteContext& c, const Candidates&) { return closed_seam_edge(c.index, c.f) >= 0; },
+       [](RouteContext& c, Candidates& out) {
+         out.keep(mesh_pole_to_pole(c.index.face(c.f), c.f, c.boundary, c.nodes));
+       },
+       Refusal::noted, true},
+      {"mapped ring and O-grid", [](const RouteContext& c, const Candidates&) { return c.boundary.inner_wires == 1; },
+       [](RouteContext& c, Candidates& out) {
+         const TopoDS_Face& face = c.index.face(c.f);
+         if (auto ring = mesh_face_ring(face, c.f, c.boundary, c.nodes, c.index.vertex_count())) {
+           out.keep(std::move(*ring));
+         }
+         out.keep(mesh_face_o_grid(face, c.f, c.boundary, c.nodes, c.index.vertex_count(), c.size,
+                                   c.options.templates));
+       },
+       Refusal::noted, false},
+      {"templates on corners", [](const RouteContext& c, const Candidates&) { return c.boundary.inner_wires == 0; },
+       [](RouteContext& c, Candidates& out) {
+         const auto requested = c.options.corners.find(c.f);
+         c.natural_corners = corner_choices(c.boundary, c.f, c.user_corners ? requested->second : std::vector<int>{});
+         for (const std::vector<int>& corners : c.natural_corners) {
+           try {
+             out.keep(mesh_face(c.index, c.f, c.boundary, corners, c.nodes, c.options.templates));
+           } catch (const InputError& e) {  // a corner set that cannot mesh the face is noted; others follow
+             out.refused(e);
+           }
+         }
+       },
+       Refusal::noted, false},
+      {"polar disk",
+       [](const RouteContext& c, const Candidates&) {
+         return c.boundary.inner_wires == 0 && c.boundary.polar && !c.user_corners;
+       },
+       [](RouteContext& c, Candidates& out) {
+         if (auto disk = mesh_polar_disk(c.index.face(c.f), c.boundary, c.nodes, c.options.templates)) {
+           out.keep(std::move(*disk));
+         }
+       },
+       Refusal::noted_without_mesh, false},
+      {"pole sector",
+       [](const RouteContext& c, const Candidates&) {
+         return c.boundary.inner_wires == 0 && c.boundary.polar && !c.user_corners && c.sector;
+       },
+       [](RouteContext& c, Candidates& out) {
+         if (auto tip = mesh_pole_sector(c.index.face(c.f), *c.sector, c.nodes, c.options.templates)) {
+           out.keep(std::move(*tip));
+         }
+       },
+       Refusal::noted_without_mesh, false},
+      {"disk in space",
+       [](const RouteContext& c, const Candidates&) {
+         return c.boundary.inner_wires == 0 && c.boundary.has_degenerate_edge && !c.boundary.polar &&
+                !c.user_corners;
+       },
+       [](RouteContext& c, Candidates& out) {
+         if (auto disk = mesh_disk_in_space(c.index.face(c.f), c.boundary, c.nodes, c.options.templates)) {
+           out.keep(std::move(*disk));
+         }
+       },
+       Refusal::noted_without_mesh, false},
+      {"disk O-grid",
+       [](const RouteContext& c, const Candidates&) {
+         return c.boundary.inner_wires == 0 && c.decompose && !c.boundary.polar;
+       },
+       [](RouteContext& c, Candidates& out) {
+         if (auto disk = mesh_face_disk(c.index.face(c.f), c.f, c.boundary, c.nodes, c.index.vertex_count(),
+                                        c.options.templates)) {
+           out.keep(std::move(*disk));
+         }
+       },
+       Refusal::noted_without_mesh, false},
+      {"decomposition",
+       [](const RouteContext& c, const Candidates& out) {
+         const std::optional<FaceMeshResult>& best = out.best();
+         return c.decompose &&
+                (!best || best->bad > 0 || best->collapsed > 0 || best->worst_corner < kGoodEnoughCorner);
+       },
+       [](RouteContext& c, Candidates& out) {
+         std::vector<FaceMeshResult> decomposed = mesh_face_decomposed(
+             c.index.face(c.f), c.f, c.boundary, c.nodes, c.index.vertex_count(), c.size, c.options.templates);
+         const std::vector<Quad> plain_quads = decomposed.front().quads;
+         // Its other variants, when its best was kept: smoothed, one may end better.
+         if (out.keep(std::move(decomposed.front()))) {
+           for (auto it = decomposed.begin() + 1; it != decomposed.end(); ++it) it->route = "decomposition";
+           c.other_decompositions.assign(std::make_move_iterator(decomposed.begin() + 1),
+                                         std::make_move_iterator(decomposed.end()));
+         }
+         search_patches(c);
+         // No patch poor enough, or none bettered: the same mesh again.
+         if (c.patches_searched && c.patches_searched->quads == plain_quads) c.patches_searched.reset();
+       },
+       Refusal::noted_without_mesh, false},
+  };
+  return routes;
+}
+
+}  // namespace
+
+std::vector<std::string> face_route_names() {
+  std::vector<std::string> names;
+  for (const FaceRoute& route : face_routes()) names.push_back(route.name);
+  return names;
+}
+
+namespace {
+
+// The face's mesh: every route of face_routes that applies proposes, the best by
+// better_face_mesh is kept and smoothed on the surface (settle_natural_choice); with
+// --corners best, more corner sets compete after them. Bad quads that remain
+// (inverted, degenerate, folded or collapsed: is_bad_quad) refuse the face unless
+// allow_inverted (never a silent bad mesh).
 FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary& boundary, const PoleSector* sector,
                               const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size) {
   const auto start = std::chrono::steady_clock::now();
   const std::string name = "face " + std::to_string(f);
-  std::optional<FaceMeshResult> best;
-  std::string refusal;  // the last route's refusal, and its kind (internal: the mesher failed)
-  RefusalCode refusal_code = RefusalCode::cannot_mesh;
-  const auto note_refusal = [&](const std::exception& e) {
-    refusal = e.what();
-    refusal_code = refusal_code_of(e);
-  };
-  if (closed_seam_edge(index, f) >= 0) {
-    // Closed around two poles: the cube sphere, the one layout without a corner of
-    // 180 degrees at a pole (pole_to_pole.h).
-    FaceMeshResult sphere = mesh_pole_to_pole(index.face(f), f, boundary, nodes);
-    sphere.meshing_seconds = seconds_since(start);
-    refuse_bad_quads(sphere, name, options);
-    return sphere;
+  RouteContext context(index, f, boundary, sector, nodes, options, size);
+  Candidates candidates;
+  for (const FaceRoute& route : face_routes()) {
+    if (!route.alone || !route.applies(context, candidates)) continue;
+    candidates.proposing(route.name);
+    route.propose(context, candidates);
+    FaceMeshResult only = std::move(*candidates.best());
+    only.meshing_seconds = seconds_since(start);
+    refuse_bad_quads(only, name, options);
+    return only;
   }
-  const bool pole = boundary.has_degenerate_edge || boundary.polar;
+  context.pole = boundary.has_degenerate_edge || boundary.polar;
   // Around a smooth pole (a sphere's) the face is decomposed in polar (x, y), holes
   // and all; a cone's tip must stay a node, which only the disk routes make sure of.
   const bool smooth_polar = boundary.polar && boundary.smooth_pole;
-  if (boundary.inner_wires > 0 && pole && !smooth_polar) {
+  if (boundary.inner_wires > 0 && context.pole && !smooth_polar) {
     throw FaceRefusalError(RefusalCode::not_supported, name + " has a hole and a pole (a cone's tip); not supported yet");
   }
-  bool decompose = !pole || smooth_polar;
-  const auto requested = options.corners.find(f);
-  const bool user_corners = requested != options.corners.end();
-  std::vector<std::vector<int>> natural_corners;
-  auto keep = [&](FaceMeshResult&& r) {
-    if (!best || better_face_mesh(r, *best)) best = std::move(r);
-  };
-  if (boundary.inner_wires == 1) {
+  context.user_corners = options.corners.count(f) > 0;
+  // The user's corners are an instruction: no other layout for a face without holes.
+  context.decompose = (!context.pole || smooth_polar) && !(boundary.inner_wires == 0 && context.user_corners);
+  for (const FaceRoute& route : face_routes()) {
+    if (route.alone || !route.applies(context, candidates)) continue;
+    candidates.proposing(route.name);
     try {
-      if (auto ring = mesh_face_ring(index.face(f), f, boundary, nodes, index.vertex_count())) keep(std::move(*ring));
-      keep(mesh_face_o_grid(index.face(f), f, boundary, nodes, index.vertex_count(), size, options.templates));
-    } catch (const InputError& e) {  // the decomposition below is the other route
-      note_refusal(e);
-    }
-  } else if (boundary.inner_wires == 0) {
-    natural_corners = corner_choices(boundary, f, user_corners ? requested->second : std::vector<int>{});
-    for (const std::vector<int>& corners : natural_corners) {
-      try {
-        keep(mesh_face(index, f, boundary, corners, nodes, options.templates));
-      } catch (const InputError& e) {  // a route that cannot mesh the face is noted; others follow
-        note_refusal(e);
-      }
-    }
-    decompose = decompose && !user_corners;  // the user's corners are an instruction
-    if (boundary.polar && !user_corners) {
-      try {
-        if (auto disk = mesh_polar_disk(index.face(f), boundary, nodes, options.templates)) keep(std::move(*disk));
-      } catch (const InputError& e) {  // the corner routes stand
-        if (!best) note_refusal(e);
-      }
-      if (sector) {
-        try {
-          if (auto tip = mesh_pole_sector(index.face(f), *sector, nodes, options.templates)) keep(std::move(*tip));
-        } catch (const InputError& e) {  // the disk routes stand
-          if (!best) note_refusal(e);
-        }
-      }
-    }
-    // A face with a pole on its rim and no seam (a sphere's lune): the disk's O-grid
-    // on the loop's mean plane, where corners on the smooth rim, or at the pole, make
-    // quads of 180 degrees.
-    if (boundary.has_degenerate_edge && !boundary.polar && !user_corners) {
-      try {
-        if (auto disk = mesh_disk_in_space(index.face(f), boundary, nodes, options.templates)) keep(std::move(*disk));
-      } catch (const InputError& e) {  // the corner routes stand
-        if (!best) note_refusal(e);
-      }
-    }
-    // A disk's O-grid (a square and four patches around it) beats corners on a smooth
-    // curve; offered when the face has no user corners and no pole (a polar disk had
-    // its own above).
-    if (decompose && !boundary.polar) {
-      try {
-        if (auto disk = mesh_face_disk(index.face(f), f, boundary, nodes, index.vertex_count(), options.templates)) {
-          keep(std::move(*disk));
-        }
-      } catch (const InputError& e) {  // the other routes stand
-        if (!best) note_refusal(e);
-      }
+      route.propose(context, candidates);
+    } catch (const InputError& e) {
+      if (route.refusal == Refusal::noted || !candidates.best()) candidates.refused(e);
     }
   }
-  // The decomposition's other variants, when its best was kept: smoothed, one of them
-  // may end better (below).
-  std::vector<FaceMeshResult> other_decompositions;
-  // The decomposition with its poor patches' corners searched (corner_search.h), where
-  // the decomposition is tried (and, with --corners best, on every face it can mesh):
-  // smoothed too, and kept when it then ends better (below).
-  std::optional<FaceMeshResult> patches_searched;
-  bool patches_tried = false;
-  const auto search_patches = [&] {
-    patches_tried = true;
-    MeshOptions searching = options.templates;
-    searching.search_patch_corners = true;
-    try {
-      patches_searched = std::move(
-          mesh_face_decomposed(index.face(f), f, boundary, nodes, index.vertex_count(), size, searching).front());
-    } catch (const InputError&) {  // the decomposition without the search stands
-    }
-  };
-  if (decompose && (!best || best->bad > 0 || best->collapsed > 0 || best->worst_corner < kGoodEnoughCorner)) {
-    try {
-      std::vector<FaceMeshResult> decomposed =
-          mesh_face_decomposed(index.face(f), f, boundary, nodes, index.vertex_count(), size, options.templates);
-      const bool kept = !best || better_face_mesh(decomposed.front(), *best);
-      const std::vector<Quad> plain_quads = decomposed.front().quads;
-      keep(std::move(decomposed.front()));
-      if (kept) other_decompositions.assign(std::make_move_iterator(decomposed.begin() + 1),
-                                            std::make_move_iterator(decomposed.end()));
-      search_patches();
-      // No patch poor enough, or none bettered: the same mesh again.
-      if (patches_searched && patches_searched->quads == plain_quads) patches_searched.reset();
-    } catch (const InputError& e) {  // a mesh already found stays
-      if (!best) note_refusal(e);
-    }
+  if (!candidates.best()) {
+    if (candidates.code() == RefusalCode::internal) throw std::runtime_error(candidates.refusal());
+    throw FaceRefusalError(candidates.code(), candidates.refusal());
   }
-  if (!best) {
-    if (refusal_code == RefusalCode::internal) throw std::runtime_error(refusal);
-    throw FaceRefusalError(refusal_code, refusal);
-  }
+  FaceMeshResult best = std::move(*candidates.best());
   // --corners best: more corner sets compete with the routes above (the natural
   // choice): the one that beats it before smoothing is smoothed and kept if it beats
   // the natural choice smoothed too, so no face ends worse than without the search.
   std::optional<FaceMeshResult> searched;
   CornerSearch search;
-  const bool search_corners = options.best_corners && !pole && !user_corners;
+  const bool search_corners = options.best_corners && !context.pole && !context.user_corners;
   if (search_corners) {
     const auto compete = [&](FaceMeshResult&& candidate) {
-      if (better_worst_then_mean(candidate, searched ? *searched : *best)) searched = std::move(candidate);
+      if (!better_worst_then_mean(candidate, searched ? *searched : best)) return;
+      if (candidate.route.empty()) candidate.route = "corner search";
+      searched = std::move(candidate);
     };
     if (boundary.inner_wires == 0) {
-      const std::vector<std::vector<int>> sets = searched_corner_choices(boundary, natural_corners);
+      const std::vector<std::vector<int>> sets = searched_corner_choices(boundary, context.natural_corners);
       search.tried = static_cast<int>(sets.size());
       for (const std::vector<int>& corners : screened_corner_sets(boundary, sets, options.templates)) {
         try {
@@ -359,35 +464,36 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
     }
     // And the decomposition with each poor patch's corners searched, holes or not:
     // where the natural choice has it already (a poor face), it stays there.
-    if (decompose && !patches_tried) {
-      search_patches();
-      if (patches_searched) compete(std::move(*patches_searched));
-      patches_searched.reset();
+    if (context.decompose && !context.patches_tried) {
+      search_patches(context);
+      if (context.patches_searched) compete(std::move(*context.patches_searched));
+      context.patches_searched.reset();
     }
-    if (patches_tried) ++search.tried;
+    if (context.patches_tried) ++search.tried;
   }
   // Every candidate route counts, the rejected ones too.
   const double meshing_seconds = seconds_since(start);
   const bool seam = std::find(boundary.is_seam.begin(), boundary.is_seam.end(), 1) != boundary.is_seam.end();
   const auto smoothing = std::chrono::steady_clock::now();
-  NaturalChoice natural{std::move(*best), std::move(other_decompositions), std::move(patches_searched)};
+  NaturalChoice natural{std::move(best), std::move(context.other_decompositions),
+                        std::move(context.patches_searched)};
   best = settle_natural_choice(index.face(f), seam, nodes, options.smooth, natural);
   if (search_corners) {
-    search.natural_worst = best->worst_corner;
-    search.natural_mean = mean_scaled_jacobian(*best);
+    search.natural_worst = best.worst_corner;
+    search.natural_mean = mean_scaled_jacobian(best);
     if (searched) {
       if (options.smooth) smooth_face_mesh(index.face(f), seam, nodes, *searched);
-      search.changed = better_worst_then_mean(*searched, *best);
-      if (search.changed) best = std::move(searched);
+      search.changed = better_worst_then_mean(*searched, best);
+      if (search.changed) best = std::move(*searched);
     }
-    search.chosen_worst = best->worst_corner;
-    search.chosen_mean = mean_scaled_jacobian(*best);
-    best->corner_search = search;
+    search.chosen_worst = best.worst_corner;
+    search.chosen_mean = mean_scaled_jacobian(best);
+    best.corner_search = search;
   }
-  best->meshing_seconds = meshing_seconds;
-  if (options.smooth) best->smoothing_seconds = seconds_since(smoothing);
-  refuse_bad_quads(*best, name, options);
-  return std::move(*best);
+  best.meshing_seconds = meshing_seconds;
+  if (options.smooth) best.smoothing_seconds = seconds_since(smoothing);
+  refuse_bad_quads(best, name, options);
+  return best;
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
-// The algorithm per face, picked in one place (best_face_mesh): the templates on the
-// face's own corners, the O-grid, the general decomposition or polar templates, the
-// best mesh kept, and the refusal policy (never a silent bad mesh).
+// The algorithm per face, picked in one place: a registry of face routes (the
+// templates on the face's own corners, ring and disk O-grids, polar templates, the
+// cube sphere, the general decomposition), each with when it applies and how it
+// proposes meshes; one chooser ranks every candidate by one order
+// (better_face_mesh), smooths the best, and applies the refusal policy (never a
+// silent bad mesh). FaceMeshResult::route names the route of the mesh kept.
 #pragma once
 
 #include <string>
@@ -30,6 +33,9 @@ struct FaceOutcome {
   FaceBoundary boundary;
   FaceMeshResult mesh;
 };
+
+// The registry's routes by name, in the order they are offered.
+std::vector<std::string> face_route_names();
 
 // Face f's mesh from the discretized edges; a refusal is returned with its reason,
 // never thrown (an internal failure is named as such).

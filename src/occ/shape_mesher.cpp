@@ -499,7 +499,8 @@ class ShapeMeshContext {
         mesh.quads.push_back(g);
       }
       mesh.scaled_jacobian.insert(mesh.scaled_jacobian.end(), m.scaled_jacobian.begin(), m.scaled_jacobian.end());
-      mesh.faces.push_back({f, m.template_tree, first, static_cast<std::int64_t>(m.quads.size()), m.corner_search});
+      mesh.faces.push_back(
+          {f, m.template_tree, first, static_cast<std::int64_t>(m.quads.size()), m.corner_search, m.route});
       result_.projected_faces += m.used_projection ? 1 : 0;
       result_.inverted += m.inverted;
       if (m.bad > 0) result_.bad_quad_faces.emplace_back(f, m.bad);

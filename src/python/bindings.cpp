@@ -90,6 +90,7 @@ py::dict mesh_dict(const ShapeMesh& mesh, const QualitySummary& quality) {
     py::dict d;
     d["face"] = f.face;
     d["template_tree"] = f.template_tree;
+    if (!f.route.empty()) d["route"] = f.route;
     d["first_quad"] = f.first_quad;
     d["quad_count"] = f.quad_count;
     if (f.corner_search) {

@@ -81,7 +81,7 @@ ShapeMesh two_face_mesh() {
       }
     }
   }
-  mesh.faces = {{3, "T0", 0, 4, std::nullopt}, {7, "T1[T0,T0,T0,T0]", 4, 4, std::nullopt}};
+  mesh.faces = {{3, "T0", 0, 4, std::nullopt, ""}, {7, "T1[T0,T0,T0,T0]", 4, 4, std::nullopt, ""}};
   mesh.refused_faces = {{5, "the face has no corners", RefusalCode::cannot_mesh, {2, 4, 6}}};
   return mesh;
 }

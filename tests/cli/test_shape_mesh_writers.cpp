@@ -132,7 +132,7 @@ TEST(InpWriter, NodesElementsAndOneElementSetPerFace) {
 TEST(InpWriter, LinesFitCalculixAndEmptyFacesGetNoBlock) {
   ShapeMesh mesh = two_face_mesh();
   mesh.nodes[7] = {-1.0000000000000002e-300, 1.2345678901234567e+300, -0.1};  // longest numbers
-  mesh.faces.insert(mesh.faces.begin() + 1, FaceMesh{9, "T0", 4, 0, std::nullopt});
+  mesh.faces.insert(mesh.faces.begin() + 1, FaceMesh{9, "T0", 4, 0, std::nullopt, ""});
   mesh.refused_faces.push_back({11, std::string(400, 'x') + "\nsecond line", RefusalCode::damaged, {}});
   const std::string text = write_to_string(write_inp, mesh);
   for (const std::string& line : split_lines(text)) EXPECT_LE(line.size(), 132u) << line;
@@ -297,7 +297,7 @@ TEST(MshWriter, QuadrangleBlocksPerFaceWithContinuousTags) {
 TEST(MshWriter, UnusedNodesAreLeftOutAndEmptyFacesHaveNoBlocks) {
   ShapeMesh mesh = two_face_mesh();
   mesh.nodes.push_back({9, 9, 9});  // node 15: no quad uses it
-  mesh.faces.push_back({12, "T0", 8, 0, std::nullopt});
+  mesh.faces.push_back({12, "T0", 8, 0, std::nullopt, ""});
   auto sections = msh_sections(write_to_string(write_msh, mesh));
   std::vector<long long> header;
   const auto nodes = msh_node_blocks(sections["Nodes"], header);

@@ -76,6 +76,7 @@ class MeshShapeTest(unittest.TestCase):
         self.assertEqual(m.absorbed_faces, [], "no face narrower than 0.004 of the size")
         self.assertTrue(all(c == 2 for c in edge_uses(m.quads).values()), "closed solid: watertight")
         self.assertEqual(sum(f["quad_count"] for f in m.faces), len(m.quads), "face ranges cover the quads")
+        self.assertEqual({f["route"] for f in m.faces}, {"templates on corners"}, "each face names its route")
         self.assertGreater(m.edge_size, 0, "default size reported")
 
     def test_sewing_a_shape_without_free_edges_changes_nothing(self):
