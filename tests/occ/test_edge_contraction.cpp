@@ -122,16 +122,23 @@ bool closed(const ShapeMesh& mesh) {
   return std::all_of(uses.begin(), uses.end(), [](const auto& u) { return u.second == 2; });
 }
 
+// A 10 x 10 square with one corner cut by `cut` * sqrt(2), extruded 3 high, meshed at
+// size 1 (contraction bound 0.004).
+TopoDS_Shape cut_prism(double cut) { return BRepPrimAPI_MakePrism(cut_square(cut), gp_Vec(0, 0, 3)).Shape(); }
+ShapeMeshResult mesh_at_size_one(const TopoDS_Shape& shape) {
+  ShapeMeshOptions options;
+  options.size = 1.0;
+  return mesh_shape(shape, options);
+}
+
 TEST(StripAbsorption, AStripNarrowerThanTheBoundIsAbsorbedAndTheSolidStaysClosed) {
   // A square cut by an edge 1.4e-6 long, extruded: the cut's side face is a strip
   // that wide. Meshed, its ends would stay (a strip folds onto itself when they are
   // contracted) and each cap would keep a quad beside them that is a triangle in
   // effect. Absorbed, the strip has no quads, its long sides share one row of nodes,
   // its ends are contracted on both caps, and the prism's mesh is closed.
-  const TopoDS_Shape prism = BRepPrimAPI_MakePrism(cut_square(1e-6), gp_Vec(0, 0, 3)).Shape();
-  ShapeMeshOptions options;
-  options.size = 1.0;
-  const ShapeMeshResult result = mesh_shape(prism, options);
+  const TopoDS_Shape prism = cut_prism(1e-6);
+  const ShapeMeshResult result = mesh_at_size_one(prism);
   EXPECT_TRUE(result.mesh.refused_faces.empty());
   ASSERT_EQ(result.absorbed_strips.size(), 1u);
   const AbsorbedStrip& strip = result.absorbed_strips.front();
@@ -142,18 +149,16 @@ TEST(StripAbsorption, AStripNarrowerThanTheBoundIsAbsorbedAndTheSolidStaysClosed
   const ShapeIndex index(prism);
   EXPECT_EQ(result.mesh.faces.size(), static_cast<std::size_t>(index.face_count() - 1));
   for (const FaceMesh& f : result.mesh.faces) EXPECT_NE(f.face, strip.face);
-  // The two faces beside the strip have all their nodes on their own surfaces within
-  // the strip's width.
+  // No quad of the faces beside it cuts across their surfaces (their merged side's
+  // nodes lie within the strip's width of them).
   EXPECT_EQ(result.off_surface, 0);
 }
 
 TEST(StripAbsorption, AStripWiderThanTheBoundIsMeshed) {
   // The same with a cut 0.014 wide, over the bound (0.004 at size 1): a row of thin
   // rectangles, every face meshed, closed.
-  const TopoDS_Shape prism = BRepPrimAPI_MakePrism(cut_square(1e-2), gp_Vec(0, 0, 3)).Shape();
-  ShapeMeshOptions options;
-  options.size = 1.0;
-  const ShapeMeshResult result = mesh_shape(prism, options);
+  const TopoDS_Shape prism = cut_prism(1e-2);
+  const ShapeMeshResult result = mesh_at_size_one(prism);
   EXPECT_TRUE(result.mesh.refused_faces.empty());
   EXPECT_TRUE(result.absorbed_strips.empty());
   EXPECT_EQ(result.mesh.faces.size(), static_cast<std::size_t>(ShapeIndex(prism).face_count()));
