@@ -512,7 +512,8 @@ TEST(FaceDecomposition, GeneratedDomainsGiveValidMeshes) {
   long long quads = 0, inverted_meshes = 0, collapsed_meshes = 0, collapsed = 0;
   std::string worst_where;
   const auto start = std::chrono::steady_clock::now();
-  for (int i = 0; i < kDomains; i += testing::case_stride()) {
+  for (int i : testing::cases(kDomains)) {
+    SCOPED_TRACE(testing::case_trace(i));
     const testing::GeneratedDomain g = testing::generated_domain(i);
     QuadMesh mesh;
     ASSERT_NO_THROW(mesh = mesh_planar_domain(g.domain, g.size)) << g.description;

@@ -55,7 +55,8 @@ bool added_a_corner(const QuadMesh& mesh, const BoundaryLoop& loop) {
 TEST(MeshProperties, GeneratedBoundariesGiveValidMeshes) {
   Tally convex, convex_new_corner, nonconvex, curved;
   Tally convex_smoothed, nonconvex_smoothed, curved_smoothed;  // as the CLI and the Python module give them
-  for (int i = 0; i < kCases; i += testing::case_stride()) {
+  for (int i : testing::cases(kCases)) {
+    SCOPED_TRACE(testing::case_trace(i));
     const testing::GeneratedCase c = testing::generated_case(i);
     const int n = static_cast<int>(c.loop.points.size());
     QuadMesh mesh;

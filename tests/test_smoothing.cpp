@@ -206,7 +206,8 @@ TEST(Smoothing, GeneratedDomainsStayValidAndTheirWorstNeverDrops) {
   constexpr int kDomains = 5040;
   long long merged_total = 0, raised = 0;
   double sum_before = 0, sum_after = 0, mean_before = 0, mean_after = 0;
-  for (int i = 0; i < kDomains; i += testing::case_stride()) {
+  for (int i : testing::cases(kDomains)) {
+    SCOPED_TRACE(testing::case_trace(i));
     const testing::GeneratedDomain g = testing::generated_domain(i);
     QuadMesh mesh = mesh_planar_domain(g.domain, g.size);
     const QualitySummary before = summarize_quality(mesh, kUp);
@@ -231,7 +232,7 @@ TEST(Smoothing, GeneratedDomainsStayValidAndTheirWorstNeverDrops) {
               "(raised in %lld), mean scaled Jacobian %.3f -> %.3f, %lld doublets merged\n",
               kDomains, sum_before / kDomains, sum_after / kDomains, raised, mean_before / kDomains,
               mean_after / kDomains, merged_total);
-  EXPECT_GT(sum_after, sum_before);
+  if (testing::whole_set()) EXPECT_GT(sum_after, sum_before);
 }
 
 TEST(Smoothing, APlanarMeshSmoothsBitForBitAsTheGeneralRouteDoes) {
