@@ -518,11 +518,10 @@ class Smoother {
     return false;
   }
 
-  // Eight directions, steps from a quarter of the shortest edge around the node
-  // halving down to 1/64 of it, at most kStepsPerSize moves per step size.
-  // Steps from a quarter of the shortest edge around the node down to 1/64 of it;
-  // around a collapsed quad, whose shortest edge is the one that collapsed (a
-  // millionth of the others), from a quarter of the longest down to 1/4096 of it.
+  // Eight directions, steps halving from a quarter of the shortest edge around the
+  // node down to 1/64 of it, at most kStepsPerSize moves per step size; around a
+  // collapsed quad, whose shortest edge is the one that collapsed (a millionth of the
+  // others), from a quarter of the longest down to 1/4096 of it.
   bool compass_search(int n, LocalQuality& best) {
     double shortest = INFINITY, longest = 0;
     for_each_neighbour(n, [&](NodeId other) {

@@ -266,18 +266,24 @@ class ShapeMeshContext {
     // Faces narrower than the contraction bound are absorbed (strip_absorption.h) and
     // edges far shorter than the size become one node (edge_contraction.h), before
     // any face's sides are counted.
+    // Strips are found among all undamaged faces, requested or not: one left meshed
+    // would keep its neighbours' short end edges.
     std::vector<char> whole(index_.face_count(), 1);
     for (const auto& [f, why] : damaged_) if (f >= 0 && f < index_.face_count()) whole[f] = 0;
     result_.absorbed_strips = contract_and_absorb(index_, strips_to_absorb(index_, whole, lengths_, usable, result_.size),
                                                   lengths_, usable, result_.size, result_.contracted_edges);
-    const bool any_requested = std::count(to_mesh_.begin(), to_mesh_.end(), 1) > 0;
+    const std::vector<char> requested = to_mesh_;
     for (const AbsorbedStrip& strip : result_.absorbed_strips) meshed_[strip.face] = to_mesh_[strip.face] = 0;
-    if (any_requested && std::count(meshed_.begin(), meshed_.end(), 1) == 0) {
-      char text[160];
-      std::snprintf(text, sizeof text, "face %d is a strip %.3g wide, under %g of the size %g: it is absorbed into "
-                    "its neighbours' edges and has no quads of its own", result_.absorbed_strips.front().face,
-                    result_.absorbed_strips.front().width, kContractedEdgeRatio, result_.size);
-      throw InputError(text);
+    if (std::count(meshed_.begin(), meshed_.end(), 1) == 0) {
+      // Every face asked for is absorbed: named, rather than an empty mesh.
+      for (const AbsorbedStrip& strip : result_.absorbed_strips) {
+        if (!requested[strip.face]) continue;
+        char text[160];
+        std::snprintf(text, sizeof text, "face %d is a strip %.3g wide, under %g of the size %g: it is absorbed "
+                      "into its neighbours' edges and has no quads of its own", strip.face, strip.width,
+                      kContractedEdgeRatio, result_.size);
+        throw InputError(text);
+      }
     }
     for (int e = 0; e < index_.edge_count(); ++e) {
       if (index_.contracted(e)) edge_floor_[e] = sized_[e] = 0;

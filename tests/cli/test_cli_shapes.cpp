@@ -775,6 +775,13 @@ TEST_F(ShapeCli, AStripNarrowerThanTheBoundIsAbsorbedAndListed) {
                              std::to_string(strip["face"].get<int>()) + ")"),
             std::string::npos)
       << summary.out;
+  // Asked for the strip alone: refused, named, rather than an empty mesh.
+  const RunResult alone = run_tquad({"mesh", file, "--size", "1", "--faces",
+                                     std::to_string(strip["face"].get<int>()), "-o", path("strip.vtu")});
+  EXPECT_EQ(alone.exit_status, 2) << alone.err;
+  EXPECT_NE(alone.err.find("face " + std::to_string(strip["face"].get<int>()) + " is a strip"), std::string::npos)
+      << alone.err;
+  EXPECT_FALSE(std::filesystem::exists(path("strip.vtu")));
 }
 
 }  // namespace
