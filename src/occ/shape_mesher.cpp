@@ -187,7 +187,12 @@ class ShapeMeshContext {
     constexpr int kRefinements = 4;
     // A round is kept only when it leaves fewer faces refused than every round before
     // it: doubling counts changes the neighbours' counts too, and on some shapes the
-    // later rounds refuse more faces than the first (a ball screw's thread faces).
+    // later rounds refuse more faces than the first. Two rounds in a row that refuse no
+    // fewer than the best before them end the refinement: a face may need its edges
+    // doubled twice, but doubling again the edges of faces that two finer counts did
+    // not repair repeats the same layouts at twice the cost each time.
+    constexpr int kStalledRounds = 2;
+    int stalled = 0;
     std::optional<RoundState> best;
     for (int round = 0;; ++round) {
       stage("assign intervals", [&] { assign_intervals(); });
@@ -196,11 +201,13 @@ class ShapeMeshContext {
       const int refused = refused_faces();
       result_.refused_per_round.push_back(refused);
       result_.kept_round = round;
+      stalled = best && refused >= best->refused ? stalled + 1 : 0;
+      if (stalled >= kStalledRounds) break;
       if (round >= kRefinements || !refine_edges_of_inverted_faces()) break;
       if (!best || refused < best->refused) best = save_round(refused, round);
       ++result_.refinement_rounds;
     }
-    if (best && result_.refused_per_round.back() > best->refused) {
+    if (best && result_.refused_per_round.back() >= best->refused) {
       result_.kept_round = best->round;
       restore_round(std::move(*best));
     }

@@ -673,6 +673,15 @@ TEST(ShapeMeshing, GeneratedMachinedParts) {
     const int fewest = *std::min_element(result.refused_per_round.begin(), result.refused_per_round.end());
     EXPECT_EQ(static_cast<int>(result.mesh.refused_faces.size()), fewest);
     EXPECT_EQ(result.refused_per_round[result.kept_round], fewest);
+    // Of rounds that tie, the first is kept; no two rounds in a row before the last
+    // refused as many faces as the best before them (two such end the refinement).
+    const std::vector<int>& rounds = result.refused_per_round;
+    const auto first_fewest = std::find(rounds.begin(), rounds.end(), fewest);
+    EXPECT_EQ(result.kept_round, static_cast<int>(first_fewest - rounds.begin()));
+    for (std::size_t r = 2; r + 1 < rounds.size(); ++r) {
+      const int best_before = *std::min_element(rounds.begin(), rounds.begin() + r - 1);
+      EXPECT_FALSE(rounds[r - 1] >= best_before && rounds[r] >= best_before) << "round " << r;
+    }
     std::printf("[ parts    ] seed %2u: faces %3d meshed %3d refused %d, quads %6lld, worst scaled Jacobian %.3f\n",
                 seed, r.faces, r.meshed, r.refused, r.quads, worst);
     faces += r.faces;
