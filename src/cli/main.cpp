@@ -19,6 +19,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/mesh_command.h"
+#include "core/mesh_option_schema.h"
 #include "occ/isolated_reader.h"
 
 namespace {
@@ -27,6 +28,13 @@ const char* const exit_status_text =
     "Exit status: 0 done; 2 the input or the command line is wrong (stderr says what and\n"
     "where); 1 an internal failure. The output file is written only when the whole mesh\n"
     "succeeded and passed its checks.";
+
+// The help of schema option `name` (core/mesh_option_schema.h), wrapped, after
+// "CAD input: " for an option boundary files do not take, and before `syntax`.
+std::string option_help(const std::string& name, bool cad_only, const std::string& syntax = "") {
+  const std::string text = (cad_only ? "CAD input. " : "") + tquad::mesh_option(name).help;
+  return tquad::wrap_text(syntax.empty() ? text : text + " " + syntax, 78);
+}
 
 // A length option's check: a finite number over 0, or of 0 or more with `zero_allowed`.
 CLI::Validator length_check(const std::string& flag, bool zero_allowed) {
@@ -73,75 +81,58 @@ int run_cli(int argc, char** argv) {
       ->type_name("FORMAT")
       ->check(CLI::IsMember({"json"}));
   mesh->add_option("--t4-ratio", command.options.t4_ratio,
-                   "k of the T4 test k*C <= A and k*C <= B (at least 2)")
+                   option_help("t4_ratio", false))
       ->type_name("K")
       ->check(CLI::Range(2, INT_MAX).description(""))
       ->capture_default_str();
   mesh->add_option("--t5-cut-edges", command.options.t5_cut_edges,
-                   "Edges on the T5 cut of a two-curve region (>= 0); 0 = from the geometry")
+                   option_help("t5_cut_edges", false))
       ->type_name("C")
       ->check(CLI::Range(0, INT_MAX).description(""))
       ->capture_default_str();
   mesh->add_option("--max-quads", command.options.max_quads,
-                   "Refuse inputs whose mesh would have more than N quads (N >= 1)")
+                   option_help("max_quads", false))
       ->type_name("N")
       ->check(CLI::Range(1LL, LLONG_MAX).description(""))
       ->capture_default_str();
   mesh->add_option("--size", command.shape.size,
-                   "CAD input: target edge length (default: the shape's bounding-box\n"
-                   "diagonal / 25). Each edge gets round(length / H) segments, at least 1,\n"
-                   "then counts change by one where a face's total would be odd.")
+                   option_help("size", true))
       ->type_name("H")
       ->check(length_check("--size", false));
   mesh->add_option("--min-size", command.shape.min_size,
-                   "CAD input: the target edge length never goes below H, given or automatic\n"
-                   "(default 0: no floor; above --size it is an error); curved and short edges\n"
-                   "may still get shorter segments")
+                   option_help("min_size", true))
       ->type_name("H")
       ->check(length_check("--min-size", true));
   mesh->add_option("--faces", command.faces,
-                   "CAD input: mesh only these faces (0-based, as FreeCAD's Shape.Faces\n"
-                   "order), e.g. 0,2,5-7")
+                   option_help("faces", true, "For example 0,2,5-7."))
       ->type_name("LIST");
   mesh->add_option("--corners", command.corners,
-                   "CAD input: corners of a face's curves, as shape vertex indices\n"
-                   "(0-based), e.g. --corners 3:0,4,7,2 (repeat for more faces); or 'best':\n"
-                   "try more corner sets (2, 3 or 4 curves) on every other face (its own\n"
-                   "without holes, each poor patch's of its decomposition) or on a boundary\n"
-                   "file's loop,\n"
-                   "and keep the best worst, then mean, scaled Jacobian (the report's\n"
-                   "corner_search gives the natural choice's beside it)")
+                   option_help("corners", true,
+                               "For example --corners 3:0,4,7,2 (repeat for more faces). Or 'best' (a boundary "
+                               "file's loop too): " + tquad::mesh_option("best_corners").help))
       ->type_name("FACE:V1,V2,...");
   mesh->add_flag("--keep-going", command.shape.keep_going,
-                 "CAD input: mesh and write the other faces when one is refused, and list\n"
-                 "the refused faces; without it a refused face stops the job (exit 2)");
+                   option_help("keep_going", true, "(exit 2)"));
   mesh->add_flag("--progress", command.progress,
-                 "CAD input: print each stage, and the faces meshed in tenths, on stderr");
+                   option_help("progress", true, "On stderr, the faces in tenths."));
   mesh->add_option("--read-timeout", command.read.seconds,
-                   "CAD input: seconds the reader (a child process) may take before the file\n"
-                   "is refused as damaged (default: 30 plus 30 per megabyte of the file)")
+                   option_help("read_timeout", true))
       ->type_name("S")
       ->check(CLI::Range(tquad::kMinReadSeconds, tquad::kMaxReadSeconds));
   mesh->add_flag("!--no-smooth", command.shape.smooth,
-                 "Keep the template nodes where they are: no smoothing of CAD faces on their\n"
-                 "surfaces, nor of a boundary region in its plane or on the surface its mesh\n"
-                 "spans (a curved loop)");
+                   option_help("smooth", false,
+                             "On by default; this flag turns it off. A boundary region is smoothed in its "
+                             "plane, or on the surface a curved loop's mesh spans."));
   mesh->add_flag("--allow-inverted", command.shape.allow_inverted,
-                 "CAD input: keep a face whose mesh still has inverted, degenerate, folded or\n"
-                 "collapsed quads after repair (a corner's scaled Jacobian at or below 1e-6\n"
-                 "against the surface normal or the quad's own, or a corner's Jacobian under\n"
-                 "1/1000 of another's; reported per face) instead of refusing it");
+                   option_help("allow_inverted", true));
   mesh->add_flag("--sew", command.shape.sew,
-                 "CAD input: join faces that touch without sharing their edge (an IGES file of\n"
-                 "trimmed surfaces) before meshing, so the mesh is connected there");
+                   option_help("sew", true));
   mesh->add_option("--order", command.shape.order,
-                   "CAD input: 1 four-node quads (default); 2 eight-node quads, a node in the\n"
-                   "middle of each edge on the curve or surface (.vtu, .inp as S8R, .msh, .json)")
+                   option_help("order", true, "Order 2 is written to .vtu, .inp (S8R), .msh and .json."))
       ->type_name("1|2")
       ->check(CLI::IsMember({1, 2}).description(""));
   mesh->add_option("--threads", command.shape.threads,
-                   "CAD input: threads meshing faces (default: all cores); the output is the\n"
-                   "same for any number")
+                   option_help("threads", true))
       ->type_name("N")
       ->check(CLI::Range(0, 1024).description(""));
   mesh->footer(exit_status_text);

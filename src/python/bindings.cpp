@@ -13,6 +13,7 @@
 #include "core/boundary_region.h"
 #include "core/input_error.h"
 #include "core/mesher.h"
+#include "core/mesh_option_schema.h"
 #include "core/mesh_validation.h"
 #include "core/planar_self_intersection.h"
 #include "core/quality.h"
@@ -316,6 +317,22 @@ PYBIND11_MODULE(_core, m) {
   m.def("mesh_boundary", &tquad::mesh_boundary_binding, py::arg("points"), py::arg("corners"),
         py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("smooth"),
         py::arg("best_corners"));
+  // The options schema (core/mesh_option_schema.h): the package's docstring and the
+  // tests read it.
+  m.def("mesh_option_schema", [] {
+    py::list rows;
+    for (const tquad::MeshOptionField& f : tquad::mesh_option_schema()) {
+      py::dict row;
+      row["name"] = f.name;
+      row["flag"] = f.flag;
+      row["freecad"] = f.freecad;
+      row["type"] = f.type;
+      row["default"] = f.python_default;
+      row["help"] = f.help;
+      rows.append(row);
+    }
+    return rows;
+  });
   m.def("mesh_shape", &tquad::mesh_shape_binding, py::arg("brep_text_or_path"), py::arg("size"),
         py::arg("faces"), py::arg("corners"), py::arg("keep_going"), py::arg("allow_inverted"),
         py::arg("threads"), py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("smooth"),

@@ -352,9 +352,6 @@ TEST_F(Success, BestCornersOnTheShippedBoundariesAreNeverWorse) {
     EXPECT_NEAR(report["quality"]["scaled_jacobian"]["min"].get<double>(), chosen, 1e-9) << stem;
     EXPECT_EQ(report["quality"]["inverted"], 0) << stem;
     changed += search["changed"].get<bool>() ? 1 : 0;
-    std::printf("[ corners  ] %-22s worst %.3f -> %.3f, mean %.3f -> %.3f (%s)\n", stem.c_str(), natural, chosen,
-                search["natural"]["mean"].get<double>(), search["chosen"]["mean"].get<double>(),
-                search["changed"].get<bool>() ? "other corners" : "given corners");
   }
   EXPECT_GT(changed, 0) << "no example found better corners";
 }

@@ -4,6 +4,7 @@ The add-on is the copy run_freecad_tests.sh installed into a temporary
 FREECAD_USER_HOME, so these also check that FreeCAD finds it the way a user's FreeCAD
 would. The reference for counts is the tquad module itself on the same BREP text.
 """
+import ast
 import os
 import sys
 import tempfile
@@ -236,6 +237,20 @@ class MeshObjectTest(unittest.TestCase):
         mesh = make_mesh(self.doc, self._part(Part.makeBox(10, 10, 10), "OptionsBox"), size=5.0)
         for keyword, (name, _) in mesh_object.OPTION_PROPERTIES.items():
             self.assertIn(name, mesh.PropertiesList, f"the property for {keyword}")
+        # The table follows the options schema: its property per option, and the
+        # object's defaults are the schema's.
+        schema = {row["name"]: row for row in _tquad().mesh_option_schema()}
+        self.assertEqual({keyword: name for keyword, (name, _) in mesh_object.OPTION_PROPERTIES.items()},
+                         {name: row["freecad"] for name, row in schema.items() if row["freecad"]})
+        fresh = make_mesh(self.doc, self._part(Part.makeBox(10, 10, 10), "DefaultsBox"))
+        for keyword, (name, convert) in mesh_object.OPTION_PROPERTIES.items():
+            with self.subTest(option=keyword):
+                value = convert(getattr(fresh, name))  # no faces or corners given: None in Python
+                self.assertEqual(value or None if keyword in ("faces", "corners") else value,
+                                 ast.literal_eval(schema[keyword]["default"]))
+        inputs = {name for _, name, _ in mesh_object._INPUTS}
+        self.assertEqual(inputs - set(mesh_object.OPTION_PROPERTIES[k][0] for k in mesh_object.OPTION_PROPERTIES),
+                         set(mesh_object.FREECAD_ONLY_PROPERTIES))
         mesh.Sew, mesh.ElementOrder, mesh.Corners = True, "2nd", ["Face1:Vertex1,Vertex3,Vertex7,Vertex5"]
         options = mesh_object.mesh_options(mesh)
         self.assertEqual((options["size"], options["sew"], options["order"]), (5.0, True, 2))

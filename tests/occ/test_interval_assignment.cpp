@@ -123,8 +123,6 @@ TEST(IntervalAssignment, AConeQuartersEdgesBesideItsApexTakeTwoSegmentsOrMore) {
     for (std::int64_t q = face.first_quad; q < face.first_quad + face.quad_count; ++q) {
       worst = std::min(worst, result.mesh.scaled_jacobian[q]);
     }
-    std::printf("[ cone     ] face %d: %s, %lld quads, worst %.3f\n", face.face, face.template_tree.c_str(),
-                static_cast<long long>(face.quad_count), worst);
     EXPECT_GE(face.quad_count, 3) << "face " << face.face;
     EXPECT_GT(worst, 0.8) << "face " << face.face;
   }

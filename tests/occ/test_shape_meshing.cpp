@@ -255,10 +255,7 @@ void check_folder(const fs::path& dir) {
   ASSERT_FALSE(files.empty()) << "no shape files in " << dir;
   for (const std::string& path : files) {
     SCOPED_TRACE(path);
-    const FileReport r = check_file(path);
-    std::printf("[ shapes   ] %-28s faces %3d meshed %3d refused %2d quads %6lld %s\n",
-                fs::path(path).filename().c_str(), r.faces, r.meshed, r.refused, r.quads,
-                r.closed ? "closed" : "open");
+    check_file(path);
   }
 }
 
@@ -547,8 +544,6 @@ TEST(ShapeMeshing, SharpConeTipsAreMetByTwoQuads) {
       worst = std::min(worst, corner_scaled_jacobian(p, static_cast<int>(at - q.begin()), own));
     }
     const double best_two = std::sin(2 * a), best_four = std::sin(2 * std::asin(std::sin(a) * std::sqrt(0.5)));
-    std::printf("[ quality  ] cone of half-angle %4.1f deg: %d quads at the tip, worst corner there %.3f "
-                "(two at best %.3f, four %.3f)\n", degrees, around, worst, best_two, best_four);
     if (degrees < 20) EXPECT_EQ(around, 2);
     ASSERT_TRUE(around == 2 || around == 4) << around;
     // Near the bound of the layout chosen. Four alike need the pole on a grid node of
@@ -596,8 +591,6 @@ TEST(ShapeMeshing, SphereCapsGetTheDiskOGridConvexOrConcave) {
         if (BRepAdaptor_Surface(index.face(f.face)).GetType() != GeomAbs_Sphere) continue;
         EXPECT_EQ(f.template_tree.substr(0, 2), "O5") << f.template_tree;
         const double worst = face_worst(result.mesh, f);
-        std::printf("[ quality  ] sphere cap from %5.1f deg, %s: %s, worst scaled Jacobian %.3f\n", degrees,
-                    concave ? "concave" : "convex ", f.template_tree.substr(0, 2).c_str(), worst);
         EXPECT_GT(worst, 0.5);
       }
     }
@@ -623,8 +616,6 @@ TEST(ShapeMeshing, SphereCapsWithAHoleAreDecomposedAroundTheirPole) {
       if (BRepAdaptor_Surface(index.face(f.face)).GetType() != GeomAbs_Sphere) continue;
       ++spheres;
       const double worst = face_worst(result.mesh, f);
-      std::printf("[ quality  ] %s's sphere face with a hole: %s, %lld quads, worst scaled Jacobian %.3f\n", name,
-                  f.template_tree.substr(0, 12).c_str(), static_cast<long long>(f.quad_count), worst);
       EXPECT_GT(worst, 0.3);
     }
     EXPECT_EQ(spheres, 1);
@@ -641,22 +632,17 @@ TEST(ShapeMeshing, GeneratedMachinedParts) {
   // concave sphere caps meshed inverted, faces around a pole with a hole refused or
   // cracked, lenses and D-shapes of two edges refused or flat, and arcs whose chords
   // crossed a notch.
-  int parts = 0, faces = 0, refused = 0, collapsed_refusals = 0;
+  int parts = 0, collapsed_refusals = 0;
   const std::string path = (fs::temp_directory_path() / "generated_part.brep").string();
   for (std::uint32_t seed = 1; seed <= 40; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
-    if (!write_generated_part(seed, path)) {
-      std::printf("[ parts    ] seed %2u: OpenCASCADE crashed building the part\n", seed);
-      continue;
-    }
+    if (!write_generated_part(seed, path)) continue;  // OpenCASCADE crashed building it
     ++parts;
     const TopoDS_Shape part = read_shape(path);
-    const FileReport r = check_file(path);
+    check_file(path);
     ShapeMeshOptions options;
     options.keep_going = true;
     const ShapeMeshResult result = mesh_shape(part, options);
-    double worst = 1.0;
-    for (double sj : result.mesh.scaled_jacobian) worst = std::min(worst, sj);
     // Refused: damaged faces alone. A decomposed face whose patches leave an interior
     // node a millionth of the size from a neighbour (a collapsed quad with sound
     // angles) has it moved off by the smoother (core/smoothing.cpp, compass steps
@@ -682,14 +668,8 @@ TEST(ShapeMeshing, GeneratedMachinedParts) {
       const int best_before = *std::min_element(rounds.begin(), rounds.begin() + r - 1);
       EXPECT_FALSE(rounds[r - 1] >= best_before && rounds[r] >= best_before) << "round " << r;
     }
-    std::printf("[ parts    ] seed %2u: faces %3d meshed %3d refused %d, quads %6lld, worst scaled Jacobian %.3f\n",
-                seed, r.faces, r.meshed, r.refused, r.quads, worst);
-    faces += r.faces;
-    refused += r.refused;
   }
   fs::remove(path);
-  std::printf("[ parts    ] %d generated parts: %d faces, %d refused (%d for a collapsed quad)\n", parts, faces,
-              refused, collapsed_refusals);
   EXPECT_GE(parts, 30);  // the generator builds most seeds' parts
   EXPECT_EQ(collapsed_refusals, 0);
 }
@@ -900,8 +880,6 @@ TEST(ShapeMeshing, WasherHalvesShareTheRingBalanceEvenly) {
   EXPECT_EQ(result.mesh.quads.size(), 12u);  // one ring of 12: both loops 6 + 6
   EXPECT_EQ(result.inverted, 0);
   const double worst = *std::min_element(result.mesh.scaled_jacobian.begin(), result.mesh.scaled_jacobian.end());
-  std::printf("[ washer   ] %s, %zu quads, worst %.3f\n", result.mesh.faces[0].template_tree.c_str(),
-              result.mesh.quads.size(), worst);
   EXPECT_GT(worst, 0.8);
 }
 
@@ -1038,8 +1016,6 @@ void expect_part_face(const fs::path& part, int face, const std::string& tree, d
   for (std::int64_t q = meshed->first_quad; q < meshed->first_quad + meshed->quad_count; ++q) {
     worst = std::min(worst, result.mesh.scaled_jacobian[q]);
   }
-  std::printf("[ face     ] %s face %d: %s, %lld quads, worst %.3f\n", part.filename().c_str(), face,
-              meshed->template_tree.c_str(), static_cast<long long>(meshed->quad_count), worst);
   EXPECT_EQ(meshed->template_tree.substr(0, tree.size()), tree);
   EXPECT_GT(worst, worst_above);
 }

@@ -3,11 +3,15 @@ an attribute or a public name added to the module and not to the stubs fails her
 import ast
 import inspect
 import os
+import sys
 import unittest
 
 import numpy as np
 
 import tquad
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+import generate_stubs  # noqa: E402
 
 
 def stub_tree():
@@ -60,6 +64,13 @@ class StubsMatchTheModule(unittest.TestCase):
             with self.subTest(function=name):
                 self.assertIn(name, functions)
                 self.assertEqual(stub_parameters(functions[name]), real_parameters(real))
+
+    def test_mesh_shape_is_generated_from_the_options_schema(self):
+        path = os.path.join(os.path.dirname(tquad.__file__), "__init__.pyi")
+        with open(path) as f:
+            text = f.read()
+        self.assertEqual(generate_stubs.stub_with_schema(text, tquad.mesh_option_schema()), text,
+                         "run scripts/generate_stubs.py")
 
     def test_mesh_attributes(self):
         square = [(0, 0), (1, 0), (2, 0), (2, 1), (2, 2), (1, 2), (0, 2), (0, 1)]

@@ -293,8 +293,6 @@ class BoundarySmoothingTest(unittest.TestCase):
         self.assertGreaterEqual(smoothed.quality["scaled_jacobian"]["min"], raw.quality["scaled_jacobian"]["min"])
         self.assertEqual(smoothed.quality["inverted"], 0)
         self.assertFalse(np.array_equal(smoothed.nodes, raw.nodes), "some interior node moved")
-        print(f"[ quality  ] plate_t2: scaled Jacobian min {raw.quality['scaled_jacobian']['min']:.3f} "
-              f"-> {smoothed.quality['scaled_jacobian']['min']:.3f} smoothed")
 
     def test_a_curved_loop_is_smoothed_on_the_surface_its_mesh_spans(self):
         import json
@@ -310,8 +308,6 @@ class BoundarySmoothingTest(unittest.TestCase):
         # templates put the farthest (their surface sags inside the sphere).
         sag = np.abs(np.linalg.norm(raw.nodes, axis=1) - 1).max()
         self.assertLessEqual(np.abs(np.linalg.norm(smoothed.nodes, axis=1) - 1).max(), sag * 1.01)
-        print(f"[ quality  ] sphere octant: scaled Jacobian min {raw.quality['scaled_jacobian']['min']:.3f} "
-              f"-> {smoothed.quality['scaled_jacobian']['min']:.3f} smoothed, sag {sag:.4f}")
 
     def test_a_tilted_plane_is_smoothed_in_that_plane(self):
         points, corners = self._plate()

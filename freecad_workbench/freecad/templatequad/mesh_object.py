@@ -130,9 +130,11 @@ def _length(value) -> float:
 
 
 #: Each keyword of tquad.mesh_shape the object offers: the property it comes from
-#: and how its value becomes the keyword's. The one place the mesh object's inputs
-#: meet the module's options; tests/freecad/test_headless.py checks that this and
-#: OPTIONS_NOT_OFFERED cover every keyword and name only properties the object has.
+#: (the options schema's "freecad" column, tquad.mesh_option_schema()) and how its
+#: value becomes the keyword's. The one place the mesh object's inputs meet the
+#: module's options; tests/freecad/test_headless.py checks this table against the
+#: schema, the object's defaults against the schema's, and that this,
+#: OPTIONS_NOT_OFFERED and FREECAD_ONLY_PROPERTIES cover every keyword and input.
 OPTION_PROPERTIES = {
     "size": ("CharacteristicLengthMax", _length),
     "min_size": ("CharacteristicLengthMin", _length),
@@ -143,6 +145,13 @@ OPTION_PROPERTIES = {
     "best_corners": ("BestCorners", bool),
     "order": ("ElementOrder", _order_number),
     "sew": ("Sew", bool),
+}
+
+#: Input properties of the object that are not options of tquad.mesh_shape, and why.
+FREECAD_ONLY_PROPERTIES = {
+    "Part": "what is meshed: its Shape goes to tquad as BREP text",
+    "KeepGoing": "whether refused faces fail the recompute or leave an Incomplete mesh",
+    "AcceptIncomplete": "whether a solver may run on an Incomplete mesh",
 }
 
 #: The keywords of tquad.mesh_shape the object does not offer as properties, and why.

@@ -9,6 +9,7 @@ Wrong input raises ValueError with the message the command line would print; the
 message names the face, edge, vertex, point or curve at fault.
 """
 import numbers
+import textwrap
 from typing import Callable, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -32,7 +33,8 @@ REFUSAL_CODES = {
     "internal": "the mesher itself failed (a bug)",
 }
 
-__all__ = ["Cancelled", "FacesRefused", "Mesh", "REFUSAL_CODES", "mesh_boundary", "mesh_shape"]
+__all__ = ["Cancelled", "FacesRefused", "Mesh", "REFUSAL_CODES", "mesh_boundary", "mesh_option_schema",
+           "mesh_shape"]
 
 _MAX_QUADS = 100_000_000
 
@@ -204,39 +206,16 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
     Args:
         brep_text_or_path: BREP text (FreeCAD's ``Shape.exportBrepToString()``) or
             the path of a .step/.stp, .iges/.igs or .brep file.
-        size: target edge length; 0 uses the bounding-box diagonal / 25.
-        min_size: the target edge length never goes below it, given or automatic
-            (0: no floor; above a given size it is a ValueError); curved and short
-            edges may still get shorter segments.
-        faces: indices of the faces to mesh (FreeCAD's ``Shape.Faces`` order); None
-            meshes all.
-        corners: per face index, the shape vertex indices where its curves begin.
-        keep_going: mesh the other faces when one is refused (listed in
-            ``refused_faces``); otherwise a refused face raises ValueError.
-        allow_inverted: keep a face whose quads stay inverted, degenerate or
-            folded after repair (listed in ``bad_quad_faces``) instead of
-            refusing it.
-        threads: threads meshing faces; 0 uses all cores (same output either way).
-        t4_ratio, t5_cut_edges, max_quads: as for mesh_boundary.
-        smooth: smooth each face's mesh on its surface (interior nodes move where
-            that raises the worst corner around them, never lowering it).
-        progress: called as ``progress(stage, done, total)`` at each stage
-            ("index", "assign intervals", "discretize edges", "mesh faces",
-            "assemble") and after each face; returning True (or raising) cancels.
-        read_timeout: seconds the reader (a child process, so that a damaged file
-            cannot take the interpreter down) may take before the input is refused
-            as damaged; None: 30 s plus 30 s per megabyte of the input.
-        best_corners: on each face without ``corners``, also try other corner
-            sets (of the face when it has no holes, and of each poor patch of its
-            decomposition) and keep the best worst, then mean, scaled Jacobian;
-            each such face's ``corner_search`` gives the natural choice's figures
-            beside the chosen ones (the CLI's --corners best).
-        order: 1 for four-node quads; 2 adds a node in the middle of every quad
-            edge, on the CAD edge's curve or the face's surface (``mid_nodes``).
-        sew: first join faces that touch without sharing their edge (an IGES file
-            of trimmed surfaces: ``unsewn_edge_pairs`` lists such edges), so the
-            mesh is connected there; face numbers stay the shape's, and
-            ``sewn_edges`` counts the edges merged.
+        {options}
+
+    The options are the command line's (``docs/cli.md``), declared once in the
+    schema ``mesh_option_schema()`` lists. In Python: a refused face without
+    ``keep_going`` raises ``FacesRefused``; ``progress`` is called as
+    ``progress(stage, done, total)`` at each stage ("index", "assign intervals",
+    "discretize edges", "mesh faces", "assemble") and after each face, and
+    returning True (or raising) cancels; ``read_timeout`` None takes the default;
+    with ``order`` 2 the middle nodes are in ``mid_nodes``; with ``sew`` the
+    edges merged are counted in ``sewn_edges``.
 
     Raises:
         Cancelled: the progress callback asked to stop (nothing is returned).
@@ -253,3 +232,23 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
                                  *_template_integers(t4_ratio, t5_cut_edges, max_quads), bool(smooth),
                                  progress, 0.0 if read_timeout is None else float(read_timeout),
                                  bool(best_corners), float(min_size), _integer(order, "order", 1, 2), bool(sew)))
+
+
+def mesh_option_schema() -> List[dict]:
+    """The options of mesh_shape as every front end knows them, in keyword order:
+    ``name`` (the keyword), ``flag`` (``tquad mesh``'s), ``freecad`` (the FreeCAD mesh
+    object's property, "" when FreeCAD sets it itself), ``type`` and ``default`` (as
+    Python writes them) and ``help``."""
+    return [dict(row) for row in _core.mesh_option_schema()]
+
+
+def _document_options(doc: str) -> str:
+    """doc with its "{options}" line replaced by each option's help, as Args lines."""
+    lines = []
+    for row in mesh_option_schema():
+        lines += textwrap.wrap(row["help"], 76, initial_indent="        %s: " % row["name"],
+                               subsequent_indent="            ")
+    return doc.replace("        {options}", "\n".join(lines))
+
+
+mesh_shape.__doc__ = _document_options(mesh_shape.__doc__ or "")

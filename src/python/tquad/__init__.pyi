@@ -2,7 +2,8 @@ from typing import Callable, Dict, Iterable, List, Mapping, Optional, Sequence, 
 
 import numpy as np
 
-__all__ = ["Cancelled", "FacesRefused", "Mesh", "REFUSAL_CODES", "mesh_boundary", "mesh_shape"]
+__all__ = ["Cancelled", "FacesRefused", "Mesh", "REFUSAL_CODES", "mesh_boundary", "mesh_option_schema",
+           "mesh_shape"]
 
 class Cancelled(RuntimeError): ...
 class FacesRefused(ValueError):
@@ -39,10 +40,13 @@ def mesh_boundary(points: Union[np.ndarray, Sequence[Sequence[float]]], corners:
                   t4_ratio: int = ..., t5_cut_edges: int = ..., max_quads: int = ...,
                   smooth: bool = ..., best_corners: bool = ...) -> Mesh: ...
 
+def mesh_option_schema() -> List[dict]: ...
+
+# Generated from the options schema by scripts/generate_stubs.py.
 def mesh_shape(brep_text_or_path: str, *, size: float = ..., faces: Optional[Iterable[int]] = ...,
                corners: Optional[Mapping[int, Sequence[int]]] = ..., keep_going: bool = ...,
                allow_inverted: bool = ..., threads: int = ..., t4_ratio: int = ...,
                t5_cut_edges: int = ..., max_quads: int = ..., smooth: bool = ...,
                progress: Optional[Callable[[str, int, int], Optional[bool]]] = ...,
-               read_timeout: Optional[float] = ..., best_corners: bool = ...,
-               min_size: float = ..., order: int = ..., sew: bool = ...) -> Mesh: ...
+               read_timeout: Optional[float] = ..., best_corners: bool = ..., min_size: float = ...,
+               order: int = ..., sew: bool = ...) -> Mesh: ...
