@@ -15,6 +15,7 @@ from refused_face import drilled_cone_face
 from PySide import QtGui
 
 COMMAND = "TemplateQuad_Mesh"
+REMESH_COMMAND = "TemplateQuad_Remesh"
 
 
 def _process_events():
@@ -190,8 +191,9 @@ class WorkbenchGuiTest(unittest.TestCase):
 
     def test_cancelled_long_run_leaves_the_document_as_it_was(self):
         """A 1.5 million quad mesh, cancelled from its progress dialog: through the
-        command no object is added; through the panel or a property set and recompute,
-        the old values and mesh stay."""
+        command no object is added; through the panel,
+        the old values and mesh stay; through the property editor and "Mesh again", the
+        same."""
         from freecad.templatequad.task_panel import TemplateQuadTaskPanel
 
         part = self.doc.addObject("Part::Box", "BigBox")
@@ -230,10 +232,17 @@ class WorkbenchGuiTest(unittest.TestCase):
         self.assertNotIn("Touched", mesh.State, "nothing left to recompute")
         self.assertIn("Cancelled", panel.summary.text())
 
-        # The same through the property editor (a property set, then recompute).
+        # The same through the property editor and the "Mesh again" command (a
+        # recompute alone does not mesh: it marks the mesh out of date).
         mesh.CharacteristicLengthMax = 0.2
-        seen = self._cancel_progress_dialog_after(450)
         self.doc.recompute()
+        self.assertTrue(mesh.OutOfDate)
+        self.assertEqual(mesh.FemMesh.FaceCount, before, "a recompute does not mesh")
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(self.doc.Name, mesh.Name)
+        seen = self._cancel_progress_dialog_after(450)
+        FreeCADGui.runCommand(REMESH_COMMAND)
+        _process_events()
         self.assertTrue(seen, "the progress dialog was shown and cancelled")
         self.assertEqual(mesh.CharacteristicLengthMax.Value, 20.0,
                          "the size of the mesh kept is put back")
@@ -249,7 +258,7 @@ class WorkbenchGuiTest(unittest.TestCase):
         mesh = make_mesh(self.doc, part, size=25.0)
         self.assertEqual(mesh.ViewObject.DisplayMode, "Faces & Wireframe", "small: edges shown")
         mesh.CharacteristicLengthMax = 0.5
-        self.doc.recompute()
+        mesh.Proxy.request_mesh(mesh)
         self.assertGreater(mesh.FemMesh.FaceCount, LARGE_MESH_QUADS)
         self.assertEqual(mesh.ViewObject.DisplayMode, "Faces", "large: faces only")
 

@@ -264,13 +264,13 @@ class MeshObjectTest(unittest.TestCase):
         self.assertFalse(mesh.BestCorners, "the corner search is off by default")
         smoothed = [tuple(mesh.FemMesh.getNodeById(i)) for i in range(1, mesh.FemMesh.NodeCount + 1)]
         mesh.Smooth = False
-        self.doc.recompute()
+        mesh.Proxy.request_mesh(mesh)
         self._assert_same_as_tquad(mesh, part.Shape, 3.0, smooth=False)
         raw = [tuple(mesh.FemMesh.getNodeById(i)) for i in range(1, mesh.FemMesh.NodeCount + 1)]
         self.assertNotEqual(raw, smoothed, "Smooth off left the nodes where smoothing put them")
         mesh.Smooth = True
         mesh.BestCorners = True
-        self.doc.recompute()
+        mesh.Proxy.request_mesh(mesh)
         self._assert_same_as_tquad(mesh, part.Shape, 3.0, best_corners=True)
 
     def test_sew_joins_faces_that_do_not_share_their_edges(self):
@@ -294,19 +294,24 @@ class MeshObjectTest(unittest.TestCase):
         self.assertTrue(any("BoxFacesApart: 12 pair(s) of edges" in w and "turn on Sew" in w
                             for w in warnings), f"the report view says so: {warnings}")
         apart.Sew = True
-        self.doc.recompute()
+        apart.Proxy.request_mesh(apart)
         self.assertEqual(apart.UnsewnEdges, 0, "sewn: none left")
         self.assertEqual(apart.FemMesh.NodeCount, whole.FemMesh.NodeCount, "sewn: the box's nodes")
         self.assertEqual(apart.FemMesh.FaceCount, whole.FemMesh.FaceCount, "sewn: the box's quads")
         self._assert_same_as_tquad(apart, apart_part.Shape, 5.0, sew=True)
 
-    def test_changing_size_remeshes_on_recompute(self):
+    def test_changing_size_marks_the_mesh_out_of_date_until_meshed_again(self):
         from freecad.templatequad import make_mesh
         part = self._part(self._filleted_box(), "FilletedBox")
         mesh = make_mesh(self.doc, part, size=4.0)
+        self.assertFalse(mesh.OutOfDate)
         coarse = mesh.FemMesh.FaceCount
         mesh.CharacteristicLengthMax = 2.0
-        self.doc.recompute()
+        self.doc.recompute()  # FreeCAD's Gmsh object too meshes only when asked
+        self.assertTrue(mesh.OutOfDate, "a recompute marks the mesh out of date")
+        self.assertEqual(mesh.FemMesh.FaceCount, coarse, "and does not mesh again")
+        mesh.Proxy.request_mesh(mesh)
+        self.assertFalse(mesh.OutOfDate)
         fine = mesh.FemMesh.FaceCount
         self.assertGreater(fine, coarse, "a smaller size must give more elements")
         self.assertAlmostEqual(mesh.ElementSizeUsed.Value, 2.0, 9, "the size used is shown")
@@ -319,8 +324,22 @@ class MeshObjectTest(unittest.TestCase):
         mesh = make_mesh(self.doc, box, size=2.0)
         before = mesh.FemMesh.FaceCount
         box.Length = 30
-        self.doc.recompute()
-        self.assertGreater(mesh.FemMesh.FaceCount, before, "the mesh follows its Part")
+        warnings = []
+        print_warning = FreeCAD.Console.PrintWarning
+        FreeCAD.Console.PrintWarning = lambda text: warnings.append(str(text))
+        try:
+            self.doc.recompute()
+            self.doc.recompute()
+        finally:
+            FreeCAD.Console.PrintWarning = print_warning
+        self.assertTrue(mesh.OutOfDate, "the part changed: the mesh is out of date")
+        self.assertEqual(mesh.FemMesh.FaceCount, before, "kept until meshed again")
+        self.assertEqual(len([w for w in warnings if "out of date" in w]), 1, f"said once: {warnings}")
+        from freecad.templatequad import solver_guard
+        self.assertIn("is out of date", solver_guard.incomplete_mesh_message(mesh), "a solver check stops")
+        mesh.Proxy.request_mesh(mesh)
+        self.assertGreater(mesh.FemMesh.FaceCount, before, "meshed again, the mesh follows its Part")
+        self.assertEqual(solver_guard.incomplete_mesh_message(mesh), "")
 
     def test_faces_subset(self):
         from freecad.templatequad import make_mesh
@@ -380,7 +399,7 @@ class MeshObjectTest(unittest.TestCase):
                          "the other face is meshed")
         self.assertEqual(mesh.FemMesh.FaceCount, 16, "20 x 20 square at size 5")
         mesh.Faces = ["Face2"]
-        self.doc.recompute()
+        mesh.Proxy.request_mesh(mesh)
         self.assertFalse(mesh.Incomplete, "only the meshable face asked for: complete")
         self.assertEqual(list(mesh.RefusedFaceNames), [])
 
@@ -414,7 +433,7 @@ class MeshObjectTest(unittest.TestCase):
         self.assertEqual(second.FemMesh.NodeCount, first.FemMesh.NodeCount + 2 * quads)
         self.assertEqual(second.ElementOrder, "2nd")
         second.ElementOrder = "1st"
-        self.doc.recompute()
+        second.Proxy.request_mesh(second)
         self.assertEqual(second.FemMesh.NodeCount, first.FemMesh.NodeCount, "back to 4-node quads")
         with self.assertRaises(ValueError):
             make_mesh(self.doc, part, element_order="3rd")
@@ -458,10 +477,23 @@ class MeshObjectTest(unittest.TestCase):
         part = self._part(Part.makeBox(10, 20, 30), "Box")
         mesh = make_mesh(self.doc, part, size=2.0)
         mesh.Corners = ["Face1:Vertex1"]
-        self.doc.recompute()
+        mesh.Proxy.request_mesh(mesh)
         self.assertIn("Invalid", mesh.State, "a failed mesh must mark the object invalid")
         self.assertEqual(mesh.FemMesh.FaceCount, 0, "a failed mesh must not keep old elements")
         self.assertIn("2, 3 or 4 corners", mesh.Proxy.last_error, mesh.Proxy.last_error)
+        # Later recomputes do not mesh it again, nor print its error again.
+        errors = []
+        print_error = FreeCAD.Console.PrintError
+        FreeCAD.Console.PrintError = lambda text: errors.append(str(text))
+        try:
+            for _ in range(3):
+                mesh.touch()
+                self.doc.recompute()
+        finally:
+            FreeCAD.Console.PrintError = print_error
+        self.assertEqual(errors, [], "the error is not printed again")
+        self.assertTrue(mesh.OutOfDate)
+        self.assertIn("2, 3 or 4 corners", mesh.Proxy.last_error, "the reason is still there")
         with self.assertRaises(ValueError, msg="make_mesh raises by default"):
             make_mesh(self.doc, part, corners=["Face1:Vertex1"])
 
@@ -512,8 +544,7 @@ class MeshObjectTest(unittest.TestCase):
         self.assertEqual(mesh.FemMesh.FaceCount, count, "saved mesh restored")
         self.assertEqual(list(mesh.ElementQuality), quality, "its quality too (the colour map)")
         self.assertIn("Hidden", mesh.getEditorMode("ElementQuality"))
-        mesh.touch()
-        self.doc.recompute()
+        mesh.Proxy.request_mesh(mesh)
         self.assertEqual(mesh.FemMesh.FaceCount, count, "re-mesh after reopening")
 
 

@@ -4,6 +4,9 @@ TemplateQuad_Mesh: mesh the selected Part object (or only its selected faces) wi
 new TemplateQuad mesh object, put it in the active FEM analysis if there is one, and
 open its task panel. The work is factory.make_mesh; this module only adds the
 selection, the transaction, the analysis and the panel.
+
+TemplateQuad_Remesh: mesh the selected TemplateQuad mesh objects again (a recompute
+only marks them OutOfDate when their part or settings change).
 """
 import FreeCAD
 import FreeCADGui
@@ -11,9 +14,10 @@ import FreeCADGui
 from . import paths
 
 MESH_COMMAND = "TemplateQuad_Mesh"
+REMESH_COMMAND = "TemplateQuad_Remesh"
 
 #: Commands of the workbench's toolbar and menu, in order.
-COMMANDS = [MESH_COMMAND]
+COMMANDS = [MESH_COMMAND, REMESH_COMMAND]
 
 
 def _has_faces(obj) -> bool:
@@ -89,6 +93,38 @@ class MeshCommand:
         FreeCADGui.getDocument(doc).setEdit(mesh.Name)
 
 
+def selected_meshes():
+    """The TemplateQuad mesh objects among the selection."""
+    from .solver_guard import is_templatequad_mesh
+    return [obj for obj in FreeCADGui.Selection.getSelection() if is_templatequad_mesh(obj)]
+
+
+class RemeshCommand:
+    """Mesh the selected TemplateQuad meshes again."""
+
+    def GetResources(self):
+        return {
+            "Pixmap": paths.icon("TemplateQuad_Mesh"),
+            "MenuText": "Mesh again",
+            "ToolTip": ("Mesh the selected TemplateQuad meshes again, with their part as it is "
+                        "now (a change of the part or of a setting marks a mesh OutOfDate)"),
+        }
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None and bool(selected_meshes())
+
+    def Activated(self):
+        for mesh in selected_meshes():
+            doc = mesh.Document
+            # Committed even when cancelled: the mesh then puts back the inputs of the
+            # mesh it keeps (an abort would undo that and leave the new inputs).
+            doc.openTransaction("Mesh again")
+            mesh.Proxy.request_mesh(mesh)
+            doc.commitTransaction()
+            if mesh.Proxy.cancelled:
+                return
+
+
 def show_mesh_over_part(mesh, part) -> None:
     """Hide the part where the mesh covers it whole; else show which faces are missing.
 
@@ -107,3 +143,4 @@ def show_mesh_over_part(mesh, part) -> None:
 def register():
     """Add the commands to FreeCADGui (the workbench calls this in Initialize())."""
     FreeCADGui.addCommand(MESH_COMMAND, MeshCommand())
+    FreeCADGui.addCommand(REMESH_COMMAND, RemeshCommand())

@@ -20,7 +20,7 @@ def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]]
               faces: Optional[Iterable[str]] = None, raise_on_error: bool = True,
               min_size: float = 0.0, smooth: bool = True, best_corners: bool = False,
               accept_incomplete: bool = False, element_order: str = "1st", sew: bool = False):
-    """make_mesh(): add a TemplateQuad mesh of part_obj to doc, recompute, return it.
+    """make_mesh(): add a TemplateQuad mesh of part_obj to doc, mesh it, return it.
 
     Args:
         doc: the App.Document.
@@ -79,7 +79,7 @@ def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]]
     if FreeCAD.GuiUp:
         from .view_provider import ViewProviderTemplateQuadMesh
         ViewProviderTemplateQuadMesh(obj.ViewObject)
-    doc.recompute()
+    obj.Proxy.request_mesh(obj)
     if obj.Proxy.cancelled:
         doc.removeObject(obj.Name)
         doc.recompute()

@@ -1,7 +1,10 @@
 """The TemplateQuad FEM mesh object (App side; works in freecadcmd).
 
-A ``Fem::FemMeshObjectPython`` whose proxy re-meshes its linked Part on every
-recompute. Being a Fem::FemMeshObject is what makes the FEM workbench take it as the
+A ``Fem::FemMeshObjectPython`` whose proxy meshes its linked Part when asked
+(``request_mesh``: the task panel's OK, the "Mesh again" command, ``make_mesh``), as
+FreeCAD's Gmsh object does; a recompute for any other reason (the part or a setting
+changed) leaves the mesh as it is and marks it ``OutOfDate``, which a solver's check
+refuses (solver_guard). Being a Fem::FemMeshObject is what makes the FEM workbench take it as the
 analysis mesh (femtools.membertools.get_mesh_to_solve looks for that type), and the
 ``Part`` link is the property name the CalculiX writer reads when it needs the
 geometry behind the mesh (femmesh.meshsetsgetter: ``Shape``, else ``Part``); the
@@ -91,6 +94,9 @@ _OUTPUTS = (
     ("App::PropertyIntegerList", "QualityHistogram",
      "Quads per scaled Jacobian band: below 0, then [0, 0.1) ... [0.9, 1]"),
     ("App::PropertyBool", "Incomplete", "Faces were refused: the mesh has holes there"),
+    ("App::PropertyBool", "OutOfDate",
+     "The part or a setting changed since the mesh was made: mesh again (double-click the "
+     "mesh and press OK, or TemplateQuad > Mesh again)"),
     ("App::PropertyInteger", "UnsewnEdges",
      "Pairs of edges where faces touch without sharing the edge: the mesh is not "
      "connected along them (Sew joins them)"),
@@ -213,15 +219,32 @@ class TemplateQuadMesh(StatelessProxy):
         self.last_error = ""
         self.cancelled = False
         self.meshed_inputs = None  # the inputs the current mesh was made with
+        self.mesh_requested = False  # set by request_mesh for the recompute it starts
+
+    def request_mesh(self, obj):
+        """Mesh obj now (a recompute of its document); the outcome is in the object
+        (its mesh and outputs) and in ``last_error`` and ``cancelled``."""
+        self.mesh_requested = True
+        try:
+            obj.touch()
+            obj.Document.recompute()
+        finally:
+            self.mesh_requested = False
 
     def execute(self, obj):
-        """Re-mesh: obj.Part's shape -> tquad -> obj.FemMesh, outputs, report view.
+        """Mesh when asked (request_mesh); any other recompute marks the mesh out of date.
+
+        Meshing: obj.Part's shape -> tquad -> obj.FemMesh, outputs, report view.
 
         On failure the mesh is emptied (a stale mesh must not reach a solver), the
         reason is printed and kept in ``last_error``, and the exception propagates so
         FreeCAD marks the object invalid. Cancelled by the user (GUI), everything is
         left as it was and ``cancelled`` is set; the caller restores the inputs.
         """
+        if not getattr(self, "mesh_requested", False):
+            self._mark_out_of_date(obj)
+            return
+        self.mesh_requested = False  # one mesh per request, whatever recomputes follow
         self.last_error = ""
         self.cancelled = False
         try:
@@ -250,6 +273,7 @@ class TemplateQuadMesh(StatelessProxy):
         obj.RefusedFaces = meshing.refused_face_lines(mesh)
         obj.RefusedFaceNames = meshing.refused_face_names(mesh)
         obj.Incomplete = bool(mesh.refused_faces)
+        obj.OutOfDate = False
         obj.UnsewnEdges = len(mesh.unsewn_edge_pairs)
         obj.Quality = meshing.quality_summary(mesh)
         obj.ScaledJacobianMin = float(mesh.quality["scaled_jacobian"]["min"])
@@ -267,6 +291,18 @@ class TemplateQuadMesh(StatelessProxy):
         absorbed = meshing.absorbed_message(mesh)
         if absorbed:
             FreeCAD.Console.PrintMessage(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {absorbed}\n")
+
+    def _mark_out_of_date(self, obj):
+        """A recompute nobody asked to mesh: the part or a setting changed. The mesh
+        stays (a large one is not thrown away for a touch) and is marked, once in the
+        report view; the solver checks refuse it until it is meshed again."""
+        if obj.OutOfDate:
+            return
+        obj.OutOfDate = True
+        part = obj.Part.Label if obj.Part is not None else "its part"
+        FreeCAD.Console.PrintWarning(
+            f"TemplateQuad: {obj.Label}: {part} or a setting changed; the mesh is out of date. "
+            "Mesh again: double-click the mesh and press OK, or TemplateQuad > Mesh again.\n")
 
     def _remember_meshed_inputs(self, obj):
         """The inputs the current mesh was made with (restored by a cancelled re-mesh)."""
@@ -314,6 +350,7 @@ class TemplateQuadMesh(StatelessProxy):
         obj.RefusedFaces = []
         obj.RefusedFaceNames = []
         obj.Incomplete = False
+        obj.OutOfDate = False
         obj.UnsewnEdges = 0
         obj.Quality = ""
         obj.QualityHistogram = []

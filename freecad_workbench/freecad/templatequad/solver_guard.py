@@ -1,6 +1,7 @@
-"""Keep an incomplete TemplateQuad mesh from reaching a solver unnoticed.
+"""Keep an incomplete or out-of-date TemplateQuad mesh from reaching a solver unnoticed.
 
-A mesh whose part had refused faces has holes where those faces are. A solver would
+A mesh made before its part or settings changed (OutOfDate) is not the model's. A
+mesh whose part had refused faces has holes where those faces are. A solver would
 solve it without complaint, and a constraint on a refused face would quietly act on
 the nodes around its rim. install() hooks FEM's checks at two places, each naming
 every incomplete TemplateQuad mesh of the analysis unless the mesh's
@@ -38,7 +39,15 @@ def refused_face_names(mesh_obj) -> List[str]:
 
 def incomplete_mesh_message(mesh_obj) -> str:
     """The solver check's message for one mesh: empty when it may be solved."""
-    if not is_templatequad_mesh(mesh_obj) or not getattr(mesh_obj, "Incomplete", False):
+    if not is_templatequad_mesh(mesh_obj):
+        return ""
+    if getattr(mesh_obj, "OutOfDate", False):
+        part = getattr(mesh_obj, "Part", None)
+        return (f"The mesh {mesh_obj.Label} is out of date: "
+                f"{part.Label if part is not None else 'its part'} or a setting changed since it "
+                "was made. Mesh it again (double-click it and press OK, or TemplateQuad > Mesh "
+                "again).\n")
+    if not getattr(mesh_obj, "Incomplete", False):
         return ""
     part = getattr(mesh_obj, "Part", None)
     part_label = part.Label if part is not None else "its part"

@@ -96,7 +96,7 @@ class TemplateQuadTaskPanel:
     def reject(self):
         if self.applied and self._inputs() != self.original:
             self._store(self.original)
-            self.obj.Document.recompute()
+            self.obj.Proxy.request_mesh(self.obj)
         FreeCADGui.getDocument(self.obj.Document).resetEdit()
         return True
 
@@ -104,18 +104,19 @@ class TemplateQuadTaskPanel:
     def apply(self) -> bool:
         """Write the panel's values to the object and re-mesh; True if it is meshed.
 
-        Nothing is re-meshed when the values are those already meshed ("Mesh" then OK
-        meshes once). A mesh cancelled by the user restores the values it replaced.
+        Nothing is re-meshed when the values are those already meshed and the mesh
+        is not out of date ("Mesh" then OK meshes once). A mesh cancelled by the user restores the values it replaced.
         """
         values = self._values()
         error = getattr(self.obj.Proxy, "last_error", "")
-        if values == self._inputs() and not error and "Touched" not in self.obj.State:
+        stale = "Touched" in self.obj.State or getattr(self.obj, "OutOfDate", False)
+        if values == self._inputs() and not error and not stale:
             return True
         doc = self.obj.Document
         before = self._inputs()
         doc.openTransaction("Edit template quad mesh")
         self._store(values)
-        doc.recompute()
+        self.obj.Proxy.request_mesh(self.obj)
         if getattr(self.obj.Proxy, "cancelled", False):
             doc.abortTransaction()
             self._store(before)
