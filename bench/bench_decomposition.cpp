@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/decomposed_mesher.h"
+#include "core/decomposition/decomposed_mesher.h"
 
 namespace tquad {
 namespace {

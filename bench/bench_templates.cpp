@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include "core/mesher.h"
-#include "core/quality.h"
+#include "core/templates/mesher.h"
+#include "core/mesh/quality.h"
 
 namespace tquad {
 namespace {

@@ -16,12 +16,12 @@
 #include <string>
 
 #include "core/boundary_region.h"
-#include "core/corner_search.h"
+#include "core/decomposition/corner_search.h"
 #include "core/input_error.h"
-#include "core/mesh_validation.h"
-#include "core/mesher.h"
-#include "core/planar_self_intersection.h"
-#include "core/smoothing.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/templates/mesher.h"
+#include "core/geometry/planar_self_intersection.h"
+#include "core/repair/smoothing.h"
 #include "io/boundary_json_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

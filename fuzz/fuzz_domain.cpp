@@ -13,10 +13,10 @@
 #include <cstdlib>
 #include <vector>
 
-#include "core/decomposed_mesher.h"
+#include "core/decomposition/decomposed_mesher.h"
 #include "core/input_error.h"
-#include "core/mesh_validation.h"
-#include "core/smoothing.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/repair/smoothing.h"
 
 namespace {
 

@@ -17,7 +17,7 @@
 #include <cstdlib>
 
 #include "core/input_error.h"
-#include "core/quality.h"
+#include "core/mesh/quality.h"
 #include "io/shape_mesh_check.h"
 #include "occ/isolated_reader.h"
 #include "occ/shape_mesher.h"

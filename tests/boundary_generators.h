@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/boundary_loop.h"
+#include "core/geometry/boundary_loop.h"
 
 namespace tquad::testing {
 

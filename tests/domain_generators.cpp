@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "core/planar_predicates.h"
+#include "core/geometry/planar_predicates.h"
 #include "boundary_generators.h"
 
 namespace tquad::testing {

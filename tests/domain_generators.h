@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/planar_domain.h"
+#include "core/decomposition/planar_domain.h"
 
 namespace tquad::testing {
 

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/quad_mesh.h"
+#include "core/mesh/quad_mesh.h"
 
 namespace tquad::testing {
 

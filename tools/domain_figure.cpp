@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/decomposed_mesher.h"
+#include "core/decomposition/decomposed_mesher.h"
 #include "domain_generators.h"
 
 int main(int argc, char** argv) {

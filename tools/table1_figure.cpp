@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "core/mesh_validation.h"
-#include "core/mesher.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/templates/mesher.h"
 #include "io/svg_writer.h"
 
 namespace {

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "cli/mesh_command.h"
-#include "core/quality.h"
-#include "core/shape_mesh.h"
+#include "core/mesh/quality.h"
+#include "core/mesh/shape_mesh.h"
 #include "occ/shape_mesher.h"
 
 namespace tquad {

@@ -6,7 +6,7 @@
 #include <ostream>
 #include <string>
 
-#include "core/mesher.h"
+#include "core/templates/mesher.h"
 #include "occ/isolated_reader.h"
 #include "occ/shape_mesher.h"
 

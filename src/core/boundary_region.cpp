@@ -5,11 +5,11 @@
 #include <string>
 #include <utility>
 
-#include "core/corner_search.h"
+#include "core/decomposition/corner_search.h"
 #include "core/elapsed.h"
-#include "core/mesh_validation.h"
-#include "core/planar_loop_decomposition.h"
-#include "core/smoothing.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/decomposition/planar_loop_decomposition.h"
+#include "core/repair/smoothing.h"
 
 namespace tquad {
 

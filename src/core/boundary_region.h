@@ -19,11 +19,11 @@
 #include <optional>
 #include <string>
 
-#include "core/boundary_loop.h"
-#include "core/mesher.h"
-#include "core/quality.h"
-#include "core/shape_mesh.h"
-#include "core/vec3.h"
+#include "core/geometry/boundary_loop.h"
+#include "core/templates/mesher.h"
+#include "core/mesh/quality.h"
+#include "core/mesh/shape_mesh.h"
+#include "core/geometry/vec3.h"
 
 namespace tquad {
 

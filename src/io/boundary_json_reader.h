@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "core/boundary_loop.h"
+#include "core/geometry/boundary_loop.h"
 
 namespace tquad {
 

@@ -18,7 +18,7 @@
 #include <ostream>
 #include <string>
 
-#include "core/shape_mesh.h"
+#include "core/mesh/shape_mesh.h"
 
 namespace tquad {
 

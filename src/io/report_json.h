@@ -14,8 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/shape_mesh.h"
-#include "core/quality.h"
+#include "core/mesh/shape_mesh.h"
+#include "core/mesh/quality.h"
 
 namespace tquad {
 

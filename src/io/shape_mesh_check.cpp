@@ -5,8 +5,8 @@
 #include <unordered_set>
 #include <vector>
 
-#include "core/mesh_edges.h"
-#include "core/vec3.h"
+#include "core/mesh/mesh_edges.h"
+#include "core/geometry/vec3.h"
 
 namespace tquad {
 

@@ -12,7 +12,7 @@
 //     another edge's middle.
 #pragma once
 
-#include "core/shape_mesh.h"
+#include "core/mesh/shape_mesh.h"
 
 namespace tquad {
 

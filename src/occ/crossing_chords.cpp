@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/planar_self_intersection.h"
+#include "core/geometry/planar_self_intersection.h"
 #include "occ/edge_discretization.h"
 
 namespace tquad {

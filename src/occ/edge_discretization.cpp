@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "core/count_fitting.h"
+#include "core/templates/count_fitting.h"
 #include "core/input_error.h"
 #include "occ/occ_vec.h"
 

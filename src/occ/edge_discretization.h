@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "core/box3.h"
-#include "core/quad_mesh.h"
+#include "core/geometry/box3.h"
+#include "core/mesh/quad_mesh.h"
 #include "occ/cusp_ends.h"
 #include "occ/shape_index.h"
 

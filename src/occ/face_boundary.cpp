@@ -15,7 +15,7 @@
 
 #include "core/face_refusal.h"
 #include "core/input_error.h"
-#include "core/planar_domain.h"
+#include "core/decomposition/planar_domain.h"
 #include "occ/occ_vec.h"
 #include <stdexcept>
 

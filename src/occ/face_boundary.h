@@ -81,7 +81,7 @@ FaceBoundary around_pole(const FaceBoundary& boundary, const TopoDS_Face& face, 
 // sides and the pole's node as the apex. For a cone the sector is its development,
 // so quads keep their shape on the surface. Nothing when the face is not such (no single apex node, a
 // sharp vertex on the rim, the angle too wide). mesh_sector_in_halves
-// (core/pole_sector_mesh.h) meshes it.
+// (core/templates/pole_sector_mesh.h) meshes it.
 struct PoleSector {
   FaceBoundary boundary;  // uv holds the sector's (x, y); polar set, its angle under 2 pi
   // Loop positions: the loop runs apex -> rim_start (the seam's first side) -> rim_end

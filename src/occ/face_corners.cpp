@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "core/corner_search.h"
+#include "core/decomposition/corner_search.h"
 #include "core/input_error.h"
 
 namespace tquad {

@@ -10,16 +10,16 @@
 #include <stdexcept>
 #include <utility>
 
-#include "core/cut_intervals.h"
-#include "core/decomposed_mesher.h"
-#include "core/disk_o_grid.h"
-#include "core/mapped_ring.h"
-#include "core/face_decomposition.h"
-#include "core/hole_rings.h"
-#include "core/touching_loops.h"
+#include "core/decomposition/cut_intervals.h"
+#include "core/decomposition/decomposed_mesher.h"
+#include "core/templates/disk_o_grid.h"
+#include "core/templates/mapped_ring.h"
+#include "core/decomposition/face_decomposition.h"
+#include "core/decomposition/hole_rings.h"
+#include "core/decomposition/touching_loops.h"
 #include "core/face_refusal.h"
 #include "core/input_error.h"
-#include "core/o_grid.h"
+#include "core/templates/o_grid.h"
 #include "occ/edge_discretization.h"
 #include "occ/occ_vec.h"
 
@@ -208,7 +208,7 @@ class FaceChart {
   }
 
   // A hole through a vertex of the outer loop (or of another hole) is spliced into
-  // that loop (core/touching_loops.h); the vertex's node stands for both its copies.
+  // that loop (core/decomposition/touching_loops.h); the vertex's node stands for both its copies.
   void splice_touching_holes() {
     const std::vector<long long> ids(boundary_nodes_.begin(), boundary_nodes_.end());
     SplicedDomain spliced = splice_touching_loops(domain_, ids);

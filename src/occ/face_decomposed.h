@@ -13,7 +13,7 @@
 
 #include <optional>
 
-#include "core/mesher.h"
+#include "core/templates/mesher.h"
 #include "occ/face_boundary.h"
 #include "occ/face_mesher.h"
 

@@ -13,15 +13,15 @@
 #include <chrono>
 #include <optional>
 
-#include "core/breadth_first_placement.h"
-#include "core/disk_o_grid.h"
-#include "core/mean_plane.h"
-#include "core/planar_domain.h"
-#include "core/pole_sector_mesh.h"
+#include "core/decomposition/breadth_first_placement.h"
+#include "core/templates/disk_o_grid.h"
+#include "core/geometry/mean_plane.h"
+#include "core/decomposition/planar_domain.h"
+#include "core/templates/pole_sector_mesh.h"
 #include "core/face_refusal.h"
 #include "core/input_error.h"
-#include "core/planar_self_intersection.h"
-#include "core/quality.h"
+#include "core/geometry/planar_self_intersection.h"
+#include "core/mesh/quality.h"
 #include "occ/occ_vec.h"
 
 namespace tquad {

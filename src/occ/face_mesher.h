@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "core/mesher.h"
-#include "core/shape_mesh.h"
+#include "core/templates/mesher.h"
+#include "core/mesh/shape_mesh.h"
 #include "occ/face_boundary.h"
 #include "occ/shape_index.h"
 
@@ -116,7 +116,7 @@ std::optional<FaceMeshResult> mesh_polar_disk(const TopoDS_Face& face, const Fac
 
 // A disk in space (one loop, no hole, no seam: a lune of a sphere between its poles,
 // a face closing on a pole with no seam) seen on its loop's mean plane and meshed as
-// the disk's O-grid (core/disk_o_grid.h), every interior node then lifted along the
+// the disk's O-grid (core/templates/disk_o_grid.h), every interior node then lifted along the
 // plane's normal onto the face: no quad gets a corner of 180 degrees on a smooth rim
 // or at a pole on it, as corners of templates there would. Nothing when the loop's
 // projection is no simple polygon, no such disk (a sharp CAD vertex), or the face
@@ -125,7 +125,7 @@ std::optional<FaceMeshResult> mesh_disk_in_space(const TopoDS_Face& face, const 
                                                  const std::vector<Vec3>& nodes, const MeshOptions& options);
 
 // A cone's tip flattened into its sector (pole_sector) and meshed in two halves
-// (core/pole_sector_mesh.h); nothing when the halves do not fit.
+// (core/templates/pole_sector_mesh.h); nothing when the halves do not fit.
 std::optional<FaceMeshResult> mesh_pole_sector(const TopoDS_Face& face, const PoleSector& sector,
                                                const std::vector<Vec3>& nodes, const MeshOptions& options);
 

@@ -8,9 +8,9 @@
 #include <map>
 #include <optional>
 
-#include "core/count_fitting.h"
+#include "core/templates/count_fitting.h"
 #include "core/input_error.h"
-#include "core/parity_pairing.h"
+#include "core/decomposition/parity_pairing.h"
 #include "occ/band_balance.h"
 #include "occ/pole_rims.h"
 #include "occ/band_alignment.h"

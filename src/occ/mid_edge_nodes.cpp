@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <optional>
 
-#include "core/mesh_edges.h"
-#include "core/quadratic_quad.h"
+#include "core/mesh/mesh_edges.h"
+#include "core/mesh/quadratic_quad.h"
 #include "occ/occ_vec.h"
 
 namespace tquad {

@@ -10,7 +10,7 @@
 
 #include <vector>
 
-#include "core/shape_mesh.h"
+#include "core/mesh/shape_mesh.h"
 #include "occ/edge_discretization.h"
 #include "occ/face_mesher.h"
 #include "occ/shape_index.h"

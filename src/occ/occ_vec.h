@@ -6,7 +6,7 @@
 #include <gp_Vec.hxx>
 
 #include "core/elapsed.h"
-#include "core/vec3.h"
+#include "core/geometry/vec3.h"
 
 namespace tquad {
 

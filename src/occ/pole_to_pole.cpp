@@ -10,7 +10,7 @@
 #include <cmath>
 #include <string>
 
-#include "core/cube_sphere.h"
+#include "core/templates/cube_sphere.h"
 #include "core/face_refusal.h"
 #include "occ/face_boundary.h"
 #include "occ/occ_vec.h"

@@ -1,6 +1,6 @@
 // mesh_pole_to_pole: a face closed around two poles, whose only edges are its seam
 // and the two degenerate edges of its poles (a full sphere, a closed surface of
-// revolution), meshed as the cube sphere (core/cube_sphere.h) laid on it.
+// revolution), meshed as the cube sphere (core/templates/cube_sphere.h) laid on it.
 //
 // The cube sphere's seam meridian takes the seam's own nodes; every other node
 // keeps the cube sphere's longitude as the surface's u (a turn of u for a turn of

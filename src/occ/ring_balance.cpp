@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "core/count_fitting.h"
+#include "core/templates/count_fitting.h"
 #include "occ/interval_assignment.h"
 
 namespace tquad {

@@ -24,8 +24,8 @@
 #include <vector>
 
 #include "core/input_error.h"
-#include "core/mesher.h"
-#include "core/shape_mesh.h"
+#include "core/templates/mesher.h"
+#include "core/mesh/shape_mesh.h"
 #include "occ/interval_assignment.h"
 #include "occ/strip_absorption.h"
 #include "occ/unsewn_edges.h"

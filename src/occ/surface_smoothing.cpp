@@ -4,10 +4,10 @@
 
 #include <algorithm>
 
-#include "core/doublets.h"
-#include "core/flat_corner_turns.h"
-#include "core/sharp_corner_flips.h"
-#include "core/smoothing.h"
+#include "core/repair/doublets.h"
+#include "core/repair/flat_corner_turns.h"
+#include "core/repair/sharp_corner_flips.h"
+#include "core/repair/smoothing.h"
 #include "occ/occ_vec.h"
 
 namespace tquad {
@@ -120,8 +120,8 @@ void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<
   // Doublets merged where the merged quad is no worse; where some are not, also with
   // every doublet merged and its reflex corner left to the smoothing; and each of
   // these again with the layout changed around boundary corners where the mesh has
-  // such corners: flat ones turned (core/flat_corner_turns.h), or lopsided sharp ones
-  // flipped (core/sharp_corner_flips.h), each on its own. The best kept. `mesh`
+  // such corners: flat ones turned (core/repair/flat_corner_turns.h), or lopsided sharp ones
+  // flipped (core/repair/sharp_corner_flips.h), each on its own. The best kept. `mesh`
   // stays as it is until the end: each try starts from it.
   std::vector<std::vector<Quad>> layouts{mesh.quads};
   const std::vector<Vec3> unit = unit_normals(mesh.normal);

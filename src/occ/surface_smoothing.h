@@ -1,5 +1,5 @@
-// smooth_face_mesh: a face's chosen mesh cleaned (doublets merged, core/doublets.h)
-// and smoothed on its surface (core/smoothing.h).
+// smooth_face_mesh: a face's chosen mesh cleaned (doublets merged, core/repair/doublets.h)
+// and smoothed on its surface (core/repair/smoothing.h).
 //
 // Interior nodes move in the mesh's own coordinates ((u, v), or polar (x, y) around a
 // pole) and are evaluated on the surface; shared boundary nodes stay. The smoothed
@@ -11,7 +11,7 @@
 
 #include <TopoDS_Face.hxx>
 
-#include "core/smoothing.h"
+#include "core/repair/smoothing.h"
 #include "occ/face_mesher.h"
 
 namespace tquad {

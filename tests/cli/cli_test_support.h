@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "core/shape_mesh.h"
-#include "core/vec3.h"
+#include "core/mesh/shape_mesh.h"
+#include "core/geometry/vec3.h"
 
 namespace tquad::cli_test {
 

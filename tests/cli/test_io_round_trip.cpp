@@ -13,9 +13,9 @@
 
 #include "cli_test_support.h"
 #include "core/input_error.h"
-#include "core/mesher.h"
-#include "core/quality.h"
-#include "core/shape_mesh.h"
+#include "core/templates/mesher.h"
+#include "core/mesh/quality.h"
+#include "core/mesh/shape_mesh.h"
 #include "io/atomic_file_writer.h"
 #include "io/boundary_json_reader.h"
 #include "io/mesh_json_reader.h"

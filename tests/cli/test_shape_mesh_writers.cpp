@@ -18,8 +18,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_test_support.h"
-#include "core/mesh_edges.h"
-#include "core/quality.h"
+#include "core/mesh/mesh_edges.h"
+#include "core/mesh/quality.h"
 #include "io/inp_writer.h"
 #include "io/mesh_json_reader.h"
 #include "io/mesh_json_writer.h"

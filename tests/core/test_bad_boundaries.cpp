@@ -6,7 +6,7 @@
 
 #include "boundary_generators.h"
 #include "core/input_error.h"
-#include "core/mesher.h"
+#include "core/templates/mesher.h"
 
 namespace tquad {
 namespace {

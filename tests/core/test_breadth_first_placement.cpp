@@ -6,9 +6,9 @@
 #include <set>
 
 #include "boundary_generators.h"
-#include "core/breadth_first_placement.h"
-#include "core/mesher.h"
-#include "core/node_adjacency.h"
+#include "core/decomposition/breadth_first_placement.h"
+#include "core/templates/mesher.h"
+#include "core/mesh/node_adjacency.h"
 
 namespace tquad {
 namespace {

@@ -1,4 +1,4 @@
-// The cube sphere (core/cube_sphere.h): a closed, consistently oriented all-quad mesh
+// The cube sphere (core/templates/cube_sphere.h): a closed, consistently oriented all-quad mesh
 // of the unit sphere for every even m, whose seam is the meridian through +x.
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <map>
 #include <utility>
 
-#include "core/cube_sphere.h"
-#include "core/quality.h"
+#include "core/templates/cube_sphere.h"
+#include "core/mesh/quality.h"
 
 namespace tquad {
 namespace {

@@ -14,14 +14,14 @@
 #include <algorithm>
 
 #include "case_stride.h"
-#include "core/cut_intervals.h"
-#include "core/decomposed_mesher.h"
-#include "core/disk_o_grid.h"
-#include "core/mapped_ring.h"
+#include "core/decomposition/cut_intervals.h"
+#include "core/decomposition/decomposed_mesher.h"
+#include "core/templates/disk_o_grid.h"
+#include "core/templates/mapped_ring.h"
 #include "core/input_error.h"
-#include "core/mesh_validation.h"
-#include "core/o_grid.h"
-#include "core/quality.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/templates/o_grid.h"
+#include "core/mesh/quality.h"
 #include "domain_generators.h"
 
 namespace tquad {

@@ -7,11 +7,11 @@
 #include <cmath>
 
 #include "boundary_generators.h"
-#include "core/fitted_surface.h"
-#include "core/mean_value_surface.h"
-#include "core/mesher.h"
-#include "core/quality.h"
-#include "core/smoothing.h"
+#include "core/geometry/fitted_surface.h"
+#include "core/geometry/mean_value_surface.h"
+#include "core/templates/mesher.h"
+#include "core/mesh/quality.h"
+#include "core/repair/smoothing.h"
 
 namespace tquad {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
-#include "core/flat_corner_turns.h"
-#include "core/quality.h"
+#include "core/repair/flat_corner_turns.h"
+#include "core/mesh/quality.h"
 #include "quad_layouts.h"
 
 namespace tquad {

@@ -5,8 +5,8 @@
 #include <set>
 
 #include "boundary_generators.h"
-#include "core/mesh_edges.h"
-#include "core/mesher.h"
+#include "core/mesh/mesh_edges.h"
+#include "core/templates/mesher.h"
 
 namespace tquad {
 namespace {

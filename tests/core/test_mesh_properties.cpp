@@ -12,13 +12,13 @@
 #include "case_stride.h"
 #include "boundary_generators.h"
 #include "core/boundary_region.h"
-#include "core/corner_search.h"
+#include "core/decomposition/corner_search.h"
 #include "core/input_error.h"
-#include "core/mesh_validation.h"
-#include "core/mesher.h"
-#include "core/planar_self_intersection.h"
-#include "core/quality.h"
-#include "core/smoothing.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/templates/mesher.h"
+#include "core/geometry/planar_self_intersection.h"
+#include "core/mesh/quality.h"
+#include "core/repair/smoothing.h"
 
 namespace tquad {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-#include "core/mesh_validation.h"
+#include "core/mesh/mesh_validation.h"
 
 namespace tquad {
 namespace {

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "boundary_generators.h"
-#include "core/mesher.h"
-#include "core/node_adjacency.h"
+#include "core/templates/mesher.h"
+#include "core/mesh/node_adjacency.h"
 
 namespace tquad {
 namespace {

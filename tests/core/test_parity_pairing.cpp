@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "core/parity_pairing.h"
+#include "core/decomposition/parity_pairing.h"
 
 namespace tquad {
 namespace {

@@ -8,12 +8,12 @@
 #include <cstring>
 
 #include "boundary_generators.h"
-#include "core/corner_search.h"
-#include "core/decomposed_mesher.h"
+#include "core/decomposition/corner_search.h"
+#include "core/decomposition/decomposed_mesher.h"
 #include "core/input_error.h"
-#include "core/mesh_validation.h"
-#include "core/patch_memo.h"
-#include "core/quality.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/decomposition/patch_memo.h"
+#include "core/mesh/quality.h"
 #include "domain_generators.h"
 
 namespace tquad {

@@ -5,7 +5,7 @@
 
 #include "boundary_generators.h"
 #include "core/input_error.h"
-#include "core/patch_memo.h"
+#include "core/decomposition/patch_memo.h"
 
 namespace tquad {
 namespace {

@@ -3,7 +3,7 @@
 // a thin quad folds it.
 #include <gtest/gtest.h>
 
-#include "core/quadratic_quad.h"
+#include "core/mesh/quadratic_quad.h"
 
 namespace tquad {
 namespace {

@@ -6,7 +6,7 @@
 #include <cstring>
 #include <random>
 
-#include "core/quality.h"
+#include "core/mesh/quality.h"
 
 namespace tquad {
 namespace {

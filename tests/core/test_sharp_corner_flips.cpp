@@ -2,8 +2,8 @@
 // corner in two quads, one of them poor there, ends in one quad; nothing else changes.
 #include <gtest/gtest.h>
 
-#include "core/quality.h"
-#include "core/sharp_corner_flips.h"
+#include "core/mesh/quality.h"
+#include "core/repair/sharp_corner_flips.h"
 #include "quad_layouts.h"
 
 namespace tquad {

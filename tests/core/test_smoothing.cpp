@@ -9,15 +9,15 @@
 #include <cstdio>
 
 #include "case_stride.h"
-#include "core/area_untangling.h"
-#include "core/decomposed_mesher.h"
-#include "core/doublets.h"
-#include "core/hole_rings.h"
-#include "core/max_min_ascent.h"
-#include "core/mesh_validation.h"
-#include "core/quality.h"
-#include "core/reflex_corners.h"
-#include "core/smoothing.h"
+#include "core/repair/area_untangling.h"
+#include "core/decomposition/decomposed_mesher.h"
+#include "core/repair/doublets.h"
+#include "core/decomposition/hole_rings.h"
+#include "core/geometry/max_min_ascent.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/mesh/quality.h"
+#include "core/repair/reflex_corners.h"
+#include "core/repair/smoothing.h"
 #include "domain_generators.h"
 
 namespace tquad {

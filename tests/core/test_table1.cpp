@@ -4,9 +4,9 @@
 #include <gtest/gtest.h>
 
 #include "boundary_generators.h"
-#include "core/mesh_validation.h"
-#include "core/mesher.h"
-#include "core/template_plan.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/templates/mesher.h"
+#include "core/templates/template_plan.h"
 
 namespace tquad {
 namespace {

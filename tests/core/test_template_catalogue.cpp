@@ -8,9 +8,9 @@
 #include <numeric>
 
 #include "core/input_error.h"
-#include "core/region_regrouping.h"
-#include "core/template_catalogue.h"
-#include "core/template_plan.h"
+#include "core/templates/region_regrouping.h"
+#include "core/templates/template_catalogue.h"
+#include "core/templates/template_plan.h"
 
 namespace tquad {
 namespace {

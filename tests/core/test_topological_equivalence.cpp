@@ -6,7 +6,7 @@
 #include <random>
 
 #include "boundary_generators.h"
-#include "core/mesher.h"
+#include "core/templates/mesher.h"
 
 namespace tquad {
 namespace {

@@ -10,11 +10,11 @@
 #include <cmath>
 #include <random>
 
-#include "core/decomposed_mesher.h"
-#include "core/face_decomposition.h"
-#include "core/mesh_validation.h"
-#include "core/quality.h"
-#include "core/touching_loops.h"
+#include "core/decomposition/decomposed_mesher.h"
+#include "core/decomposition/face_decomposition.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/mesh/quality.h"
+#include "core/decomposition/touching_loops.h"
 #include "domain_generators.h"
 
 namespace tquad {

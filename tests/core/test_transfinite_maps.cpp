@@ -3,10 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "boundary_generators.h"
-#include "core/curve_geometry.h"
-#include "core/mapped_grid.h"
-#include "core/mesher.h"
-#include "core/patch_maps.h"
+#include "core/geometry/curve_geometry.h"
+#include "core/templates/mapped_grid.h"
+#include "core/templates/mesher.h"
+#include "core/templates/patch_maps.h"
 
 namespace tquad {
 namespace {

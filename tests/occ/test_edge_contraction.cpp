@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "core/quality.h"
+#include "core/mesh/quality.h"
 #include "occ/edge_contraction.h"
 #include "occ/edge_discretization.h"
 #include "occ/shape_index.h"

@@ -19,7 +19,7 @@
 #include <string>
 
 #include "core/input_error.h"
-#include "core/quadratic_quad.h"
+#include "core/mesh/quadratic_quad.h"
 #include "occ/shape_mesher.h"
 #include "occ/shape_reader.h"
 

@@ -64,8 +64,8 @@
 
 #include "core/input_error.h"
 #include "generated_parts.h"
-#include "core/quadratic_quad.h"
-#include "core/quality.h"
+#include "core/mesh/quadratic_quad.h"
+#include "core/mesh/quality.h"
 #include "occ/face_mesher.h"
 #include "occ/shape_index.h"
 #include "occ/edge_contraction.h"
@@ -467,7 +467,7 @@ TopoDS_Face rectangle_with_touching_hole(bool circle) {
 
 TEST(ShapeMeshing, AHoleThroughAVertexOfTheOuterLoopIsSplicedIntoIt) {
   // The region around a hole that touches the outer loop at a shared vertex is still
-  // one region, bounded by one walk through that vertex twice (core/touching_loops.h).
+  // one region, bounded by one walk through that vertex twice (core/decomposition/touching_loops.h).
   // Refused before ("the boundary touches itself"). Both wedges at the vertex get
   // quads there, meeting at its one node; no refinement round is spent.
   for (const bool circle : {false, true}) {
@@ -645,7 +645,7 @@ TEST(ShapeMeshing, GeneratedMachinedParts) {
     const ShapeMeshResult result = mesh_shape(part, options);
     // Refused: damaged faces alone. A decomposed face whose patches leave an interior
     // node a millionth of the size from a neighbour (a collapsed quad with sound
-    // angles) has it moved off by the smoother (core/smoothing.cpp, compass steps
+    // angles) has it moved off by the smoother (core/repair/smoothing.cpp, compass steps
     // from the longest edge around it); counted below.
     for (const RefusedFace& f : result.mesh.refused_faces) {
       if (f.code == RefusalCode::inverted_quads && f.reason.find("collapsed") != std::string::npos) {

@@ -1,9 +1,9 @@
-#include "core/breadth_first_placement.h"
+#include "core/decomposition/breadth_first_placement.h"
 
 #include <algorithm>
 #include <deque>
 
-#include "core/node_adjacency.h"
+#include "core/mesh/node_adjacency.h"
 
 namespace tquad {
 

@@ -1,4 +1,4 @@
-#include "core/coarse_triangulation.h"
+#include "core/decomposition/coarse_triangulation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-#include "core/planar_predicates.h"
+#include "core/geometry/planar_predicates.h"
 
 namespace tquad {
 

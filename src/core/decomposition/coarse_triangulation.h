@@ -17,7 +17,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "core/vec3.h"
+#include "core/geometry/vec3.h"
 
 namespace tquad {
 

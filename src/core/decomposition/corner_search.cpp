@@ -1,11 +1,11 @@
-#include "core/corner_search.h"
+#include "core/decomposition/corner_search.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/input_error.h"
-#include "core/quality.h"
-#include "core/smoothing.h"
+#include "core/mesh/quality.h"
+#include "core/repair/smoothing.h"
 
 namespace tquad {
 

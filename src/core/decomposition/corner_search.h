@@ -14,10 +14,10 @@
 #include <optional>
 #include <vector>
 
-#include "core/boundary_loop.h"
-#include "core/mesher.h"
-#include "core/shape_mesh.h"
-#include "core/vec3.h"
+#include "core/geometry/boundary_loop.h"
+#include "core/templates/mesher.h"
+#include "core/mesh/shape_mesh.h"
+#include "core/geometry/vec3.h"
 
 namespace tquad {
 

@@ -1,4 +1,4 @@
-#include "core/cut_intervals.h"
+#include "core/decomposition/cut_intervals.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/count_fitting.h"
+#include "core/templates/count_fitting.h"
 #include "core/input_error.h"
-#include "core/parity_pairing.h"
+#include "core/decomposition/parity_pairing.h"
 
 namespace tquad {
 

@@ -15,7 +15,7 @@
 
 #include <vector>
 
-#include "core/face_decomposition.h"
+#include "core/decomposition/face_decomposition.h"
 
 namespace tquad {
 

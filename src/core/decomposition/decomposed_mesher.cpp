@@ -1,16 +1,16 @@
-#include "core/decomposed_mesher.h"
+#include "core/decomposition/decomposed_mesher.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "core/cut_intervals.h"
-#include "core/hole_rings.h"
+#include "core/decomposition/cut_intervals.h"
+#include "core/decomposition/hole_rings.h"
 #include "core/input_error.h"
-#include "core/patch_stitching.h"
-#include "core/quality.h"
-#include "core/untangle.h"
+#include "core/decomposition/patch_stitching.h"
+#include "core/mesh/quality.h"
+#include "core/repair/untangle.h"
 
 namespace tquad {
 

@@ -8,9 +8,9 @@
 //   // mesh.nodes starts with the domain's boundary points, loop after loop, bit-exact.
 #pragma once
 
-#include "core/face_decomposition.h"
-#include "core/mesher.h"
-#include "core/patch_memo.h"
+#include "core/decomposition/face_decomposition.h"
+#include "core/templates/mesher.h"
+#include "core/decomposition/patch_memo.h"
 
 namespace tquad {
 

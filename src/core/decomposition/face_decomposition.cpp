@@ -1,4 +1,4 @@
-#include "core/face_decomposition.h"
+#include "core/decomposition/face_decomposition.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,10 +9,10 @@
 #include <string>
 #include <tuple>
 
-#include "core/coarse_triangulation.h"
+#include "core/decomposition/coarse_triangulation.h"
 #include "core/input_error.h"
-#include "core/planar_predicates.h"
-#include "core/planar_self_intersection.h"
+#include "core/geometry/planar_predicates.h"
+#include "core/geometry/planar_self_intersection.h"
 
 namespace tquad {
 

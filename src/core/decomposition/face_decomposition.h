@@ -35,7 +35,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/planar_domain.h"
+#include "core/decomposition/planar_domain.h"
 
 namespace tquad {
 

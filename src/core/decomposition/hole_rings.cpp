@@ -1,4 +1,4 @@
-#include "core/hole_rings.h"
+#include "core/decomposition/hole_rings.h"
 
 #include <algorithm>
 #include <array>
@@ -6,9 +6,9 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "core/face_decomposition.h"
+#include "core/decomposition/face_decomposition.h"
 #include "core/input_error.h"
-#include "core/quality.h"
+#include "core/mesh/quality.h"
 
 namespace tquad {
 

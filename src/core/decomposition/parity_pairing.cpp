@@ -1,9 +1,9 @@
-#include "core/parity_pairing.h"
+#include "core/decomposition/parity_pairing.h"
 
 #include <deque>
 #include <utility>
 
-#include "core/count_fitting.h"
+#include "core/templates/count_fitting.h"
 
 namespace tquad {
 

@@ -1,8 +1,8 @@
-#include "core/patch_memo.h"
+#include "core/decomposition/patch_memo.h"
 
 #include <cstring>
 
-#include "core/corner_search.h"
+#include "core/decomposition/corner_search.h"
 
 namespace tquad {
 

@@ -7,7 +7,7 @@
 #include <deque>
 #include <vector>
 
-#include "core/mesher.h"
+#include "core/templates/mesher.h"
 
 namespace tquad {
 

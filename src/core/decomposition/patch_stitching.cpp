@@ -1,4 +1,4 @@
-#include "core/patch_stitching.h"
+#include "core/decomposition/patch_stitching.h"
 
 namespace tquad {
 

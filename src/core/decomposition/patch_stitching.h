@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "core/mesher.h"
-#include "core/patch_memo.h"
+#include "core/templates/mesher.h"
+#include "core/decomposition/patch_memo.h"
 
 namespace tquad {
 

@@ -1,9 +1,9 @@
-#include "core/planar_loop_decomposition.h"
+#include "core/decomposition/planar_loop_decomposition.h"
 
-#include "core/decomposed_mesher.h"
+#include "core/decomposition/decomposed_mesher.h"
 #include "core/input_error.h"
-#include "core/mean_plane.h"
-#include "core/planar_domain.h"
+#include "core/geometry/mean_plane.h"
+#include "core/decomposition/planar_domain.h"
 
 namespace tquad {
 

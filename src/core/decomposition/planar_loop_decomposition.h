@@ -8,10 +8,10 @@
 
 #include <optional>
 
-#include "core/boundary_loop.h"
-#include "core/mesher.h"
-#include "core/quad_mesh.h"
-#include "core/vec3.h"
+#include "core/geometry/boundary_loop.h"
+#include "core/templates/mesher.h"
+#include "core/mesh/quad_mesh.h"
+#include "core/geometry/vec3.h"
 
 namespace tquad {
 

@@ -1,4 +1,4 @@
-#include "core/touching_loops.h"
+#include "core/decomposition/touching_loops.h"
 
 #include <algorithm>
 #include <cmath>

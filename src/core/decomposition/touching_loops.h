@@ -18,7 +18,7 @@
 
 #include <vector>
 
-#include "core/planar_domain.h"
+#include "core/decomposition/planar_domain.h"
 
 namespace tquad {
 

@@ -1,4 +1,4 @@
-#include "core/boundary_loop.h"
+#include "core/geometry/boundary_loop.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <string>
 #include <tuple>
 
-#include "core/box3.h"
+#include "core/geometry/box3.h"
 #include "core/input_error.h"
-#include "core/planar_self_intersection.h"
+#include "core/geometry/planar_self_intersection.h"
 
 namespace tquad {
 

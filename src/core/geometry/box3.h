@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "core/vec3.h"
+#include "core/geometry/vec3.h"
 
 namespace tquad {
 

@@ -1,4 +1,4 @@
-#include "core/curve_geometry.h"
+#include "core/geometry/curve_geometry.h"
 
 #include <algorithm>
 

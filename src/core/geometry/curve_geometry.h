@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "core/quad_mesh.h"
-#include "core/vec3.h"
+#include "core/mesh/quad_mesh.h"
+#include "core/geometry/vec3.h"
 
 namespace tquad {
 

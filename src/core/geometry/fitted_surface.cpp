@@ -1,10 +1,10 @@
-#include "core/fitted_surface.h"
+#include "core/geometry/fitted_surface.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 
-#include "core/node_adjacency.h"
+#include "core/mesh/node_adjacency.h"
 
 namespace tquad {
 

@@ -17,8 +17,8 @@
 
 #include <vector>
 
-#include "core/mean_plane.h"
-#include "core/quad_mesh.h"
+#include "core/geometry/mean_plane.h"
+#include "core/mesh/quad_mesh.h"
 
 namespace tquad {
 

@@ -1,4 +1,4 @@
-#include "core/max_min_ascent.h"
+#include "core/geometry/max_min_ascent.h"
 
 #include <algorithm>
 #include <cmath>

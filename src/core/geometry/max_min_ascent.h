@@ -12,7 +12,7 @@
 
 #include <vector>
 
-#include "core/vec3.h"
+#include "core/geometry/vec3.h"
 
 namespace tquad {
 

@@ -1,8 +1,8 @@
-#include "core/mean_plane.h"
+#include "core/geometry/mean_plane.h"
 
 #include <cmath>
 
-#include "core/planar_self_intersection.h"
+#include "core/geometry/planar_self_intersection.h"
 
 namespace tquad {
 

@@ -1,8 +1,8 @@
-#include "core/mean_value_surface.h"
+#include "core/geometry/mean_value_surface.h"
 
 #include <cmath>
 
-#include "core/mean_plane.h"
+#include "core/geometry/mean_plane.h"
 
 namespace tquad {
 

@@ -11,7 +11,7 @@
 
 #include <vector>
 
-#include "core/mean_plane.h"
+#include "core/geometry/mean_plane.h"
 
 namespace tquad {
 

@@ -1,12 +1,12 @@
-#include "core/planar_self_intersection.h"
+#include "core/geometry/planar_self_intersection.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "core/box3.h"
+#include "core/geometry/box3.h"
 #include "core/input_error.h"
-#include "core/planar_predicates.h"
+#include "core/geometry/planar_predicates.h"
 
 namespace tquad {
 

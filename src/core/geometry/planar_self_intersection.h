@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/vec3.h"
+#include "core/geometry/vec3.h"
 
 namespace tquad {
 

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "core/quad_mesh.h"
+#include "core/mesh/quad_mesh.h"
 
 namespace tquad {
 

@@ -1,4 +1,4 @@
-#include "core/mesh_edges.h"
+#include "core/mesh/mesh_edges.h"
 
 #include <algorithm>
 #include <utility>

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "core/quad_mesh.h"
+#include "core/mesh/quad_mesh.h"
 
 namespace tquad {
 

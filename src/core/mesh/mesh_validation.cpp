@@ -1,4 +1,4 @@
-#include "core/mesh_validation.h"
+#include "core/mesh/mesh_validation.h"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/node_adjacency.h"
+#include "core/mesh/node_adjacency.h"
 
 namespace tquad {
 

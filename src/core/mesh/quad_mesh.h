@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/vec3.h"
+#include "core/geometry/vec3.h"
 
 namespace tquad {
 

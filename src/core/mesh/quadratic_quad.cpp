@@ -1,4 +1,4 @@
-#include "core/quadratic_quad.h"
+#include "core/mesh/quadratic_quad.h"
 
 #include <algorithm>
 #include <cmath>

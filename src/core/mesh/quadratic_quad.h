@@ -5,8 +5,8 @@
 
 #include <array>
 
-#include "core/shape_mesh.h"
-#include "core/vec3.h"
+#include "core/mesh/shape_mesh.h"
+#include "core/geometry/vec3.h"
 
 namespace tquad {
 

@@ -1,4 +1,4 @@
-#include "core/quality.h"
+#include "core/mesh/quality.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/quad_mesh.h"
-#include "core/shape_mesh.h"
+#include "core/mesh/quad_mesh.h"
+#include "core/mesh/shape_mesh.h"
 
 namespace tquad {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/face_refusal.h"
-#include "core/quad_mesh.h"
+#include "core/mesh/quad_mesh.h"
 
 namespace tquad {
 

@@ -1,9 +1,9 @@
-#include "core/area_untangling.h"
+#include "core/repair/area_untangling.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/node_adjacency.h"
+#include "core/mesh/node_adjacency.h"
 
 namespace tquad {
 

@@ -1,10 +1,10 @@
-#include "core/doublets.h"
+#include "core/repair/doublets.h"
 
 #include <algorithm>
 #include <array>
 
-#include "core/node_adjacency.h"
-#include "core/quality.h"
+#include "core/mesh/node_adjacency.h"
+#include "core/mesh/quality.h"
 
 namespace tquad {
 

@@ -1,10 +1,10 @@
-#include "core/flat_corner_turns.h"
+#include "core/repair/flat_corner_turns.h"
 
 #include <algorithm>
 #include <utility>
 
-#include "core/quads_around_nodes.h"
-#include "core/quality.h"
+#include "core/mesh/quads_around_nodes.h"
+#include "core/mesh/quality.h"
 
 namespace tquad {
 

@@ -1,4 +1,4 @@
-#include "core/reflex_corners.h"
+#include "core/repair/reflex_corners.h"
 
 #include <vector>
 

@@ -9,8 +9,8 @@
 // boundary_edges / 2 still holds (four nodes and four quads more).
 #pragma once
 
-#include "core/quad_mesh.h"
-#include "core/vec3.h"
+#include "core/mesh/quad_mesh.h"
+#include "core/geometry/vec3.h"
 
 namespace tquad {
 

@@ -1,4 +1,4 @@
-#include "core/sharp_corner_flips.h"
+#include "core/repair/sharp_corner_flips.h"
 
 #include <algorithm>
 #include <array>
@@ -6,9 +6,9 @@
 #include <utility>
 #include <vector>
 
-#include "core/flat_corner_turns.h"
-#include "core/quads_around_nodes.h"
-#include "core/quality.h"
+#include "core/repair/flat_corner_turns.h"
+#include "core/mesh/quads_around_nodes.h"
+#include "core/mesh/quality.h"
 
 namespace tquad {
 

@@ -1,4 +1,4 @@
-#include "core/smoothing.h"
+#include "core/repair/smoothing.h"
 
 #include <algorithm>
 #include <array>
@@ -7,15 +7,15 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/area_untangling.h"
-#include "core/doublets.h"
-#include "core/fitted_surface.h"
-#include "core/mean_value_surface.h"
-#include "core/max_min_ascent.h"
-#include "core/mesh_validation.h"
-#include "core/node_adjacency.h"
-#include "core/quality.h"
-#include "core/reflex_corners.h"
+#include "core/repair/area_untangling.h"
+#include "core/repair/doublets.h"
+#include "core/geometry/fitted_surface.h"
+#include "core/geometry/mean_value_surface.h"
+#include "core/geometry/max_min_ascent.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/mesh/node_adjacency.h"
+#include "core/mesh/quality.h"
+#include "core/repair/reflex_corners.h"
 
 namespace tquad {
 

@@ -31,7 +31,7 @@
 #include <functional>
 #include <vector>
 
-#include "core/quad_mesh.h"
+#include "core/mesh/quad_mesh.h"
 
 namespace tquad {
 

@@ -1,4 +1,4 @@
-#include "core/untangle.h"
+#include "core/repair/untangle.h"
 
 #include <algorithm>
 #include <array>
@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/node_adjacency.h"
+#include "core/mesh/node_adjacency.h"
 
 namespace tquad {
 

@@ -13,7 +13,7 @@
 
 #include <optional>
 
-#include "core/quad_mesh.h"
+#include "core/mesh/quad_mesh.h"
 
 namespace tquad {
 

@@ -1,4 +1,4 @@
-#include "core/cube_sphere.h"
+#include "core/templates/cube_sphere.h"
 
 #include <array>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "core/disk_o_grid.h"
+#include "core/templates/disk_o_grid.h"
 
 #include <algorithm>
 #include <array>
@@ -6,9 +6,9 @@
 #include <string>
 
 #include "core/input_error.h"
-#include "core/patch_stitching.h"
-#include "core/planar_predicates.h"
-#include "core/planar_self_intersection.h"
+#include "core/decomposition/patch_stitching.h"
+#include "core/geometry/planar_predicates.h"
+#include "core/geometry/planar_self_intersection.h"
 
 namespace tquad {
 

@@ -15,8 +15,8 @@
 
 #include <optional>
 
-#include "core/mesher.h"
-#include "core/planar_domain.h"
+#include "core/templates/mesher.h"
+#include "core/decomposition/planar_domain.h"
 
 namespace tquad {
 

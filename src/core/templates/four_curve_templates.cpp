@@ -1,6 +1,6 @@
 // T1 and T2: templates of four-curve regions (paper, Figure 3(a) and 3(b)).
-#include "core/patch_maps.h"
-#include "core/template_realization.h"
+#include "core/templates/patch_maps.h"
+#include "core/templates/template_realization.h"
 
 namespace tquad {
 

@@ -1,8 +1,8 @@
-#include "core/mapped_grid.h"
+#include "core/templates/mapped_grid.h"
 
 #include <vector>
 
-#include "core/curve_geometry.h"
+#include "core/geometry/curve_geometry.h"
 
 namespace tquad {
 

@@ -6,8 +6,8 @@
 // This reproduces graded boundary spacing inside the region.
 #pragma once
 
-#include "core/mesh_builder.h"
-#include "core/region.h"
+#include "core/mesh/mesh_builder.h"
+#include "core/templates/region.h"
 
 namespace tquad {
 

@@ -1,4 +1,4 @@
-#include "core/mapped_ring.h"
+#include "core/templates/mapped_ring.h"
 
 #include <cmath>
 #include <limits>

@@ -12,8 +12,8 @@
 
 #include <optional>
 
-#include "core/planar_domain.h"
-#include "core/quad_mesh.h"
+#include "core/decomposition/planar_domain.h"
+#include "core/mesh/quad_mesh.h"
 
 namespace tquad {
 

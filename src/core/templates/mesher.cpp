@@ -1,15 +1,15 @@
-#include "core/mesher.h"
+#include "core/templates/mesher.h"
 
-#include "core/count_fitting.h"
+#include "core/templates/count_fitting.h"
 
 #include <stdexcept>
 #include <string>
 
 #include "core/input_error.h"
-#include "core/planar_self_intersection.h"
-#include "core/region_regrouping.h"
-#include "core/template_plan.h"
-#include "core/template_realization.h"
+#include "core/geometry/planar_self_intersection.h"
+#include "core/templates/region_regrouping.h"
+#include "core/templates/template_plan.h"
+#include "core/templates/template_realization.h"
 
 namespace tquad {
 

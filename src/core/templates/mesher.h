@@ -6,9 +6,9 @@
 //   QuadMesh mesh = mesh_boundary(loop);          // mesh.template_tree == "T0"
 #pragma once
 
-#include "core/boundary_loop.h"
-#include "core/quad_mesh.h"
-#include "core/untangle.h"
+#include "core/geometry/boundary_loop.h"
+#include "core/mesh/quad_mesh.h"
+#include "core/repair/untangle.h"
 
 namespace tquad {
 

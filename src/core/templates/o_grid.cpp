@@ -1,8 +1,8 @@
-#include "core/o_grid.h"
+#include "core/templates/o_grid.h"
 
 #include <algorithm>
 
-#include "core/planar_predicates.h"
+#include "core/geometry/planar_predicates.h"
 
 namespace tquad {
 

@@ -9,7 +9,7 @@
 
 #include <optional>
 
-#include "core/face_decomposition.h"
+#include "core/decomposition/face_decomposition.h"
 
 namespace tquad {
 

@@ -1,4 +1,4 @@
-#include "core/patch_maps.h"
+#include "core/templates/patch_maps.h"
 
 namespace tquad {
 

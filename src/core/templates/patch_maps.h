@@ -3,7 +3,7 @@
 
 #include <array>
 
-#include "core/curve_geometry.h"
+#include "core/geometry/curve_geometry.h"
 
 namespace tquad {
 

@@ -1,10 +1,10 @@
-#include "core/pole_sector_mesh.h"
+#include "core/templates/pole_sector_mesh.h"
 
 #include <cmath>
 #include <string>
 
 #include "core/input_error.h"
-#include "core/patch_stitching.h"
+#include "core/decomposition/patch_stitching.h"
 
 namespace tquad {
 

@@ -14,7 +14,7 @@
 #include <optional>
 #include <vector>
 
-#include "core/mesher.h"
+#include "core/templates/mesher.h"
 
 namespace tquad {
 

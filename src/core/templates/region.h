@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "core/quad_mesh.h"
-#include "core/template_catalogue.h"
+#include "core/mesh/quad_mesh.h"
+#include "core/templates/template_catalogue.h"
 
 namespace tquad {
 

@@ -1,4 +1,4 @@
-#include "core/region_regrouping.h"
+#include "core/templates/region_regrouping.h"
 
 #include <algorithm>
 #include <cstdlib>

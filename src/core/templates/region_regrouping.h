@@ -15,7 +15,7 @@
 
 #include <vector>
 
-#include "core/template_catalogue.h"
+#include "core/templates/template_catalogue.h"
 
 namespace tquad {
 

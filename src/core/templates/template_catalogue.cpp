@@ -1,11 +1,11 @@
-#include "core/template_catalogue.h"
+#include "core/templates/template_catalogue.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "core/mapped_grid.h"
-#include "core/template_realization.h"
+#include "core/templates/mapped_grid.h"
+#include "core/templates/template_realization.h"
 
 namespace tquad {
 

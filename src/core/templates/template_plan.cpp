@@ -1,10 +1,10 @@
-#include "core/template_plan.h"
+#include "core/templates/template_plan.h"
 
 #include <numeric>
 #include <stdexcept>
 
 #include "core/input_error.h"
-#include "core/region_regrouping.h"
+#include "core/templates/region_regrouping.h"
 
 namespace tquad {
 

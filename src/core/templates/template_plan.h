@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/template_catalogue.h"
+#include "core/templates/template_catalogue.h"
 
 namespace tquad {
 

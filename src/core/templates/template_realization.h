@@ -11,9 +11,9 @@
 
 #include <vector>
 
-#include "core/mesh_builder.h"
-#include "core/region.h"
-#include "core/template_catalogue.h"
+#include "core/mesh/mesh_builder.h"
+#include "core/templates/region.h"
+#include "core/templates/template_catalogue.h"
 
 namespace tquad {
 

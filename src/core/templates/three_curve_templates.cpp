@@ -1,8 +1,8 @@
 // T3 and T4: templates of three-curve regions (paper, Figure 3(c) and 3(d)).
 #include <algorithm>
 
-#include "core/patch_maps.h"
-#include "core/template_realization.h"
+#include "core/templates/patch_maps.h"
+#include "core/templates/template_realization.h"
 
 namespace tquad {
 

@@ -1,6 +1,6 @@
 // T5: the template of two-curve regions (paper, Figure 3(e)).
-#include "core/patch_maps.h"
-#include "core/template_realization.h"
+#include "core/templates/patch_maps.h"
+#include "core/templates/template_realization.h"
 
 namespace tquad {
 
