@@ -12,7 +12,7 @@
 #include <string>
 
 #include "core/input_error.h"
-#include "occ/descriptor_io.h"
+#include "occ/read/descriptor_io.h"
 #include "reader_server.h"
 #include "shape_fuzz_check.h"
 

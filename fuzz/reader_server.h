@@ -26,8 +26,8 @@
 #include <string>
 
 #include "core/input_error.h"
-#include "occ/descriptor_io.h"
-#include "occ/isolated_reader.h"
+#include "occ/read/descriptor_io.h"
+#include "occ/read/isolated_reader.h"
 
 namespace tquad::fuzz {
 

@@ -19,7 +19,7 @@
 #include "core/input_error.h"
 #include "core/mesh/quality.h"
 #include "io/shape_mesh_check.h"
-#include "occ/isolated_reader.h"
+#include "occ/read/isolated_reader.h"
 #include "occ/shape_mesher.h"
 
 namespace tquad::fuzz {

@@ -18,7 +18,7 @@
 #include "cli/shape_arguments.h"
 #include "core/elapsed.h"
 #include "core/input_error.h"
-#include "occ/isolated_reader.h"
+#include "occ/read/isolated_reader.h"
 
 namespace tquad {
 

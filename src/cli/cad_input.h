@@ -6,7 +6,7 @@
 // CAD input (cad_input_loader.cpp). Debian links OpenCASCADE's libraries to bind
 // every symbol when they are loaded: a boundary file is meshed without that start
 // (binding them all costs a program noticeable time and memory before it does
-// anything), and a BREP file without the STEP and IGES readers' (occ/exchange_reader.h).
+// anything), and a BREP file without the STEP and IGES readers' (occ/read/exchange_reader.h).
 #pragma once
 
 #include <ostream>
@@ -26,7 +26,7 @@ struct CadInputMesh {
   std::vector<std::string> read_warnings;  // ReadShape::warnings
 };
 
-// Reads command.input in a child process (occ/isolated_reader.h), meshes the faces
+// Reads command.input in a child process (occ/read/isolated_reader.h), meshes the faces
 // command.shape selects, measures the quality. Throws InputError naming the file;
 // progress lines (--progress) go to `err`.
 CadInputMesh mesh_cad_input(const MeshCommand& command, std::ostream& err);

@@ -20,7 +20,7 @@
 
 #include "cli/mesh_command.h"
 #include "core/mesh_option_schema.h"
-#include "occ/isolated_reader.h"
+#include "occ/read/isolated_reader.h"
 
 namespace {
 

@@ -29,8 +29,8 @@
 #include "io/svg_writer.h"
 #include "io/vtu_writer.h"
 #include "cli/cad_input.h"
-#include "occ/edge_contraction.h"
-#include "occ/shape_formats.h"
+#include "occ/model/edge_contraction.h"
+#include "occ/read/shape_formats.h"
 
 namespace tquad {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/templates/mesher.h"
-#include "occ/isolated_reader.h"
+#include "occ/read/isolated_reader.h"
 #include "occ/shape_mesher.h"
 
 namespace tquad {

@@ -1,8 +1,8 @@
-#include "occ/edge_contraction.h"
-#include "occ/strip_absorption.h"
+#include "occ/model/edge_contraction.h"
+#include "occ/model/strip_absorption.h"
 #include "occ/shape_mesher.h"
 
-#include "occ/band_alignment.h"
+#include "occ/intervals/band_alignment.h"
 
 #include <BRepBndLib.hxx>
 #include <BRepGProp.hxx>
@@ -26,14 +26,14 @@
 
 #include "core/elapsed.h"
 #include "core/input_error.h"
-#include "occ/cusp_ends.h"
-#include "occ/edge_discretization.h"
-#include "occ/face_sewing.h"
-#include "occ/mid_edge_nodes.h"
-#include "occ/face_boundary.h"
-#include "occ/face_corners.h"
-#include "occ/face_route.h"
-#include "occ/shape_index.h"
+#include "occ/face/cusp_ends.h"
+#include "occ/intervals/edge_discretization.h"
+#include "occ/model/face_sewing.h"
+#include "occ/face/mid_edge_nodes.h"
+#include "occ/face/face_boundary.h"
+#include "occ/face/face_corners.h"
+#include "occ/face/face_route.h"
+#include "occ/model/shape_index.h"
 
 namespace tquad {
 

@@ -26,9 +26,9 @@
 #include "core/input_error.h"
 #include "core/templates/mesher.h"
 #include "core/mesh/shape_mesh.h"
-#include "occ/interval_assignment.h"
-#include "occ/strip_absorption.h"
-#include "occ/unsewn_edges.h"
+#include "occ/intervals/interval_assignment.h"
+#include "occ/model/strip_absorption.h"
+#include "occ/model/unsewn_edges.h"
 
 namespace tquad {
 

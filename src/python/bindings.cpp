@@ -21,8 +21,8 @@
 #include "io/shape_mesh_check.h"
 #include "core/mesh/shape_mesh.h"
 #include "occ/shape_mesher.h"
-#include "occ/isolated_reader.h"
-#include "occ/shape_reader.h"
+#include "occ/read/isolated_reader.h"
+#include "occ/read/shape_reader.h"
 
 namespace py = pybind11;
 

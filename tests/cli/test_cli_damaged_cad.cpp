@@ -1,4 +1,4 @@
-// Damaged CAD files: the reader runs in a child process (occ/isolated_reader.h), so a
+// Damaged CAD files: the reader runs in a child process (occ/read/isolated_reader.h), so a
 // file that crashes OpenCASCADE's reader, or makes it loop, is refused with exit 2
 // and one line naming the file; nothing is written and the command itself survives.
 // The damaged files are made here from the shipped examples by the edits named in

@@ -15,8 +15,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "occ/cusp_ends.h"
-#include "occ/edge_discretization.h"
+#include "occ/face/cusp_ends.h"
+#include "occ/intervals/edge_discretization.h"
 #include "occ/shape_mesher.h"
 
 namespace tquad {

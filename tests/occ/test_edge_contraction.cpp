@@ -22,11 +22,11 @@
 #include <vector>
 
 #include "core/mesh/quality.h"
-#include "occ/edge_contraction.h"
-#include "occ/edge_discretization.h"
-#include "occ/shape_index.h"
+#include "occ/model/edge_contraction.h"
+#include "occ/intervals/edge_discretization.h"
+#include "occ/model/shape_index.h"
 #include "occ/shape_mesher.h"
-#include "occ/strip_absorption.h"
+#include "occ/model/strip_absorption.h"
 
 namespace tquad {
 namespace {

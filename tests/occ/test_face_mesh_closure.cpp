@@ -5,9 +5,9 @@
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 
-#include "occ/edge_discretization.h"
-#include "occ/face_mesh_closure.h"
-#include "occ/face_route.h"
+#include "occ/intervals/edge_discretization.h"
+#include "occ/face/face_mesh_closure.h"
+#include "occ/face/face_route.h"
 
 namespace tquad {
 namespace {

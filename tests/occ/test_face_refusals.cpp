@@ -30,8 +30,8 @@
 
 #include "core/input_error.h"
 #include "generated_parts.h"
-#include "occ/edge_discretization.h"
-#include "occ/shape_index.h"
+#include "occ/intervals/edge_discretization.h"
+#include "occ/model/shape_index.h"
 #include "occ/shape_mesher.h"
 
 namespace tquad {

@@ -8,8 +8,8 @@
 
 #include <set>
 
-#include "occ/edge_discretization.h"
-#include "occ/face_route.h"
+#include "occ/intervals/edge_discretization.h"
+#include "occ/face/face_route.h"
 
 namespace tquad {
 namespace {

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "occ/face_route.h"
-#include "occ/shape_index.h"
+#include "occ/face/face_route.h"
+#include "occ/model/shape_index.h"
 #include "occ/shape_mesher.h"
 
 namespace tquad {

@@ -19,10 +19,10 @@
 #include <cmath>
 #include <map>
 
-#include "occ/edge_discretization.h"
-#include "occ/interval_assignment.h"
+#include "occ/intervals/edge_discretization.h"
+#include "occ/intervals/interval_assignment.h"
 #include "occ/shape_mesher.h"
-#include "occ/shape_index.h"
+#include "occ/model/shape_index.h"
 
 namespace tquad {
 namespace {

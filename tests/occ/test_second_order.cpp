@@ -21,7 +21,7 @@
 #include "core/input_error.h"
 #include "core/mesh/quadratic_quad.h"
 #include "occ/shape_mesher.h"
-#include "occ/shape_reader.h"
+#include "occ/read/shape_reader.h"
 
 namespace tquad {
 namespace {

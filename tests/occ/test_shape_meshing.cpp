@@ -66,11 +66,11 @@
 #include "generated_parts.h"
 #include "core/mesh/quadratic_quad.h"
 #include "core/mesh/quality.h"
-#include "occ/face_mesher.h"
-#include "occ/shape_index.h"
-#include "occ/edge_contraction.h"
+#include "occ/face/face_mesher.h"
+#include "occ/model/shape_index.h"
+#include "occ/model/edge_contraction.h"
 #include "occ/shape_mesher.h"
-#include "occ/shape_reader.h"
+#include "occ/read/shape_reader.h"
 
 namespace tquad {
 namespace {
