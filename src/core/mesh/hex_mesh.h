@@ -1,0 +1,54 @@
+// HexMesh: hexahedra swept from quads (occ/sweep/sweep.h), with what the writers and
+// the report need: the solids swept and refused, and each CAD face's nodes.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/geometry/vec3.h"
+#include "core/mesh/quad_mesh.h"
+
+namespace tquad {
+
+// Eight nodes as VTK's hexahedron (type 12) and CalculiX's C3D8 order them: a bottom
+// face 0-3, the top face 4-7 above it (node i + 4 above node i), 0-1-2-3 turning
+// counter-clockwise seen from the top, so every corner's Jacobian is positive.
+using Hex = std::array<NodeId, 8>;
+
+struct SweptSolid {
+  int solid = 0;             // the shape's solid (0-based, in TopExp order)
+  int source = 0, target = 0;  // its caps (shape face indices, 0-based)
+  int layers = 0;            // hexahedra from source to target
+  double height = 0.0;       // the sweep's length
+  std::int64_t first_hex = 0, hex_count = 0;
+};
+
+struct RefusedSolid {
+  int solid = 0;
+  std::string reason;  // names the solid and the faces that block it
+};
+
+struct HexMesh {
+  std::vector<Vec3> nodes;
+  std::vector<Hex> hexes;
+  std::vector<SweptSolid> solids;  // in hex order
+  std::vector<RefusedSolid> refused;
+  // Per CAD face of a swept solid (shape face index), its nodes, ascending: the
+  // caps' and the sides' (a side's are its source edge's nodes in every layer).
+  std::vector<std::pair<int, std::vector<NodeId>>> face_nodes;
+  std::vector<double> scaled_jacobian;  // per hex (hex_scaled_jacobian)
+};
+
+// The worst of the eight corners' scaled Jacobians: the determinant of the three
+// unit edge vectors leaving each corner (Knupp's hexahedron metric); 1 for a cube,
+// at or below 0 for an inverted or degenerate corner.
+double hex_scaled_jacobian(const std::array<Vec3, 8>& p);
+
+// The hexahedron's volume (six tetrahedra from node 0's diagonal), for tests and
+// checks; exact for hexahedra whose faces are planar.
+double hex_volume(const std::array<Vec3, 8>& p);
+
+}  // namespace tquad

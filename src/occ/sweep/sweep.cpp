@@ -1,0 +1,310 @@
+#include "occ/sweep/sweep.h"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <gp_Pln.hxx>
+#include <gp_Vec.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <set>
+
+#include "core/input_error.h"
+#include "occ/model/occ_vec.h"
+#include "occ/model/shape_index.h"
+
+namespace tquad {
+
+namespace {
+
+// The shape face indices of a sub-shape's faces, ascending.
+std::vector<int> faces_of(const ShapeIndex& index, const TopoDS_Shape& shape) {
+  std::set<int> out;
+  for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) out.insert(index.face_index(it.Current()));
+  return {out.begin(), out.end()};
+}
+
+std::set<int> edges_of(const ShapeIndex& index, int face) {
+  std::set<int> out;
+  for (TopExp_Explorer it(index.face(face), TopAbs_EDGE); it.More(); it.Next()) {
+    out.insert(index.edge_index(it.Current()));
+  }
+  return out;
+}
+
+std::vector<gp_Pnt> vertex_points(const TopoDS_Shape& shape) {
+  TopTools_IndexedMapOfShape vertices;
+  TopExp::MapShapes(shape, TopAbs_VERTEX, vertices);
+  std::vector<gp_Pnt> out;
+  for (int i = 1; i <= vertices.Extent(); ++i) out.push_back(BRep_Tool::Pnt(TopoDS::Vertex(vertices(i))));
+  return out;
+}
+
+gp_Pnt centroid(const std::vector<gp_Pnt>& points) {
+  gp_XYZ sum(0, 0, 0);
+  for (const gp_Pnt& p : points) sum += p.XYZ();
+  return gp_Pnt(sum / static_cast<double>(std::max<std::size_t>(1, points.size())));
+}
+
+std::string face_name(int f) { return "face " + std::to_string(f); }
+
+// Why faces s and t are not the caps of an extrusion of the solid whose faces are
+// `solid_faces`, or "" with `d` the vector from s to t.
+std::string extrusion_caps(const ShapeIndex& index, const std::vector<int>& solid_faces, int s, int t, double tol,
+                           gp_Vec& d) {
+  for (int f : {s, t}) {
+    if (BRepAdaptor_Surface(index.face(f)).GetType() != GeomAbs_Plane) return face_name(f) + " is not planar";
+  }
+  const std::vector<gp_Pnt> vs = vertex_points(index.face(s)), vt = vertex_points(index.face(t));
+  if (vs.size() != vt.size()) return face_name(s) + " and " + face_name(t) + " have different numbers of vertices";
+  d = gp_Vec(centroid(vs), centroid(vt));
+  for (const gp_Pnt& v : vs) {
+    const gp_Pnt moved = v.Translated(d);
+    const bool found = std::any_of(vt.begin(), vt.end(), [&](const gp_Pnt& w) { return w.Distance(moved) <= tol; });
+    if (!found) return face_name(t) + " is not " + face_name(s) + " moved along one vector";
+  }
+  const gp_Dir normal = BRepAdaptor_Surface(index.face(s)).Plane().Axis().Direction();
+  if (std::abs(d.Dot(gp_Vec(normal))) <= tol) return face_name(s) + " and " + face_name(t) + " lie in one plane";
+  const std::set<int> source_edges = edges_of(index, s), target_edges = edges_of(index, t);
+  const std::size_t sides = solid_faces.size() - 2;
+  if (sides != source_edges.size()) {
+    return "its " + std::to_string(sides) + " side faces are not one per edge of " + face_name(s) + " (" +
+           std::to_string(source_edges.size()) + "): side faces split along the sweep are not swept yet";
+  }
+  for (int f : solid_faces) {
+    if (f == s || f == t) continue;
+    for (int e : edges_of(index, f)) {
+      if (source_edges.count(e) || target_edges.count(e)) continue;
+      const BRepAdaptor_Curve curve(index.edge(e));
+      const gp_Vec along(curve.Value(curve.FirstParameter()), curve.Value(curve.LastParameter()));
+      const bool straight = curve.GetType() == GeomAbs_Line;
+      if (!straight || std::min((along - d).Magnitude(), (along + d).Magnitude()) > tol) {
+        return "side " + face_name(f) + ": edge " + std::to_string(e) +
+               " is not a straight segment from the source to the target";
+      }
+    }
+  }
+  return "";
+}
+
+struct SolidCaps {
+  int source = -1, target = -1;
+  gp_Vec d;
+  std::string why_not;  // when none: the first reason met
+};
+
+// The caps of the solid: the pair given, or the valid pair whose source has the most
+// edges (the profile; on a box every pair is valid), the lower face first on a tie.
+SolidCaps find_caps(const ShapeIndex& index, const std::vector<int>& solid_faces, const SweepOptions& options,
+                    double tol) {
+  SolidCaps best;
+  const bool given = options.source >= 0;
+  std::size_t best_edges = 0;
+  for (int s : solid_faces) {
+    for (int t : solid_faces) {
+      if (s == t || (given && (s != options.source || t != options.target))) continue;
+      gp_Vec d;
+      const std::string why = extrusion_caps(index, solid_faces, s, t, tol, d);
+      if (!why.empty()) {
+        if (best.why_not.empty() || given) best.why_not = why;
+        continue;
+      }
+      const std::size_t edges = edges_of(index, s).size();
+      if (best.source < 0 || edges > best_edges) {
+        best.source = s;
+        best.target = t;
+        best.d = d;
+        best_edges = edges;
+      }
+    }
+  }
+  if (best.source < 0 && best.why_not.empty()) best.why_not = "it has no two planar faces that are translates";
+  return best;
+}
+
+double shape_diagonal(const TopoDS_Shape& shape) {
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box);
+  return box.IsVoid() ? 1.0 : std::sqrt(box.SquareExtent());
+}
+
+double point_to_edge(const gp_Pnt& p, const TopoDS_Edge& edge) {
+  BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeVertex(p).Vertex(), edge);
+  return distance.IsDone() && distance.NbSolution() > 0 ? distance.Value() : INFINITY;
+}
+
+// One solid's hexahedra, appended to `out`; throws InputError naming what failed.
+void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, const std::vector<int>& solid_faces,
+                 const SolidCaps& caps, const SweepOptions& options, double tol, HexMesh& out, double& size) {
+  ShapeMeshOptions face = options.face;
+  face.faces = {caps.source};
+  face.keep_going = false;
+  const ShapeMeshResult source = mesh_shape(shape, face);
+  size = source.size;
+  // The source's nodes, compacted to those of its quads.
+  std::map<NodeId, NodeId> compact;
+  std::vector<Vec3> base;
+  for (const Quad& q : source.mesh.quads) {
+    for (NodeId n : q) {
+      if (compact.emplace(n, static_cast<NodeId>(base.size())).second) base.push_back(source.mesh.nodes[n]);
+    }
+  }
+  const Vec3 d = to_vec3(caps.d);
+  const double height = caps.d.Magnitude();
+  const int layers = options.layers > 0 ? options.layers : std::max(1, static_cast<int>(std::lround(height / size)));
+  const long long count = static_cast<long long>(base.size());
+  if (count * (layers + 1) > static_cast<long long>(INT32_MAX)) {
+    throw InputError("solid " + std::to_string(solid) + ": the sweep would have over 2^31 nodes; use fewer layers or a larger size");
+  }
+  const NodeId offset = static_cast<NodeId>(out.nodes.size());
+  for (int k = 0; k <= layers; ++k) {
+    for (const Vec3& p : base) out.nodes.push_back(p + (static_cast<double>(k) / layers) * d);
+  }
+  const auto at = [&](NodeId n, int k) { return static_cast<NodeId>(offset + k * count + compact.at(n)); };
+  SweptSolid record;
+  record.solid = solid;
+  record.source = caps.source;
+  record.target = caps.target;
+  record.layers = layers;
+  record.height = height;
+  record.first_hex = static_cast<std::int64_t>(out.hexes.size());
+  long long bad = 0;
+  for (const Quad& q : source.mesh.quads) {
+    const Vec3 normal = cross(source.mesh.nodes[q[2]] - source.mesh.nodes[q[0]],
+                              source.mesh.nodes[q[3]] - source.mesh.nodes[q[1]]);
+    const Quad bottom = dot(normal, d) > 0 ? q : Quad{q[0], q[3], q[2], q[1]};
+    for (int k = 0; k < layers; ++k) {
+      Hex h;
+      for (int i = 0; i < 4; ++i) {
+        h[i] = at(bottom[i], k);
+        h[i + 4] = at(bottom[i], k + 1);
+      }
+      std::array<Vec3, 8> p;
+      for (int i = 0; i < 8; ++i) p[i] = out.nodes[h[i]];
+      const double sj = hex_scaled_jacobian(p);
+      if (!(sj > 1e-6)) ++bad;
+      out.hexes.push_back(h);
+      out.scaled_jacobian.push_back(sj);
+    }
+  }
+  if (bad > 0) {
+    throw InputError("solid " + std::to_string(solid) + ": " + std::to_string(bad) +
+                     " hexahedra would be inverted or degenerate (source " + face_name(caps.source) + ")");
+  }
+  record.hex_count = static_cast<std::int64_t>(out.hexes.size()) - record.first_hex;
+  out.solids.push_back(record);
+  // Node sets: the caps, then each side face through its source edge's nodes.
+  std::vector<NodeId> source_nodes, target_nodes;
+  for (NodeId i = 0; i < count; ++i) {
+    source_nodes.push_back(offset + i);
+    target_nodes.push_back(static_cast<NodeId>(offset + layers * count + i));
+  }
+  out.face_nodes.emplace_back(caps.source, source_nodes);
+  out.face_nodes.emplace_back(caps.target, target_nodes);
+  const std::set<int> source_edges = edges_of(index, caps.source);
+  for (int f : solid_faces) {
+    if (f == caps.source || f == caps.target) continue;
+    std::vector<NodeId> nodes;
+    for (int e : edges_of(index, f)) {
+      if (!source_edges.count(e)) continue;
+      const TopoDS_Edge& edge = index.edge(e);
+      for (const auto& [original, i] : compact) {
+        const Vec3& p = source.mesh.nodes[original];
+        if (point_to_edge(gp_Pnt(p.x, p.y, p.z), edge) > tol) continue;
+        for (int k = 0; k <= layers; ++k) nodes.push_back(static_cast<NodeId>(offset + k * count + i));
+      }
+    }
+    std::sort(nodes.begin(), nodes.end());
+    out.face_nodes.emplace_back(f, nodes);
+  }
+}
+
+}  // namespace
+
+SweepResult sweep_shape(const TopoDS_Shape& shape, const SweepOptions& options) {
+  if ((options.source >= 0) != (options.target >= 0)) {
+    throw InputError("give both the source and the target face, or neither");
+  }
+  if (options.layers < 0) throw InputError("layers must be 0 (from the size) or more, not " + std::to_string(options.layers));
+  const ShapeIndex index(shape);
+  for (int f : {options.source, options.target}) {
+    if (f >= index.face_count()) {
+      throw InputError(face_name(f) + " does not exist; the shape has faces 0.." + std::to_string(index.face_count() - 1));
+    }
+  }
+  TopTools_IndexedMapOfShape solids;
+  TopExp::MapShapes(shape, TopAbs_SOLID, solids);
+  if (solids.Extent() == 0) throw InputError("the shape has no solid to sweep (only faces or shells)");
+  const double tol = std::max(1e-6 * shape_diagonal(shape), 1e-9);
+  SweepResult result;
+  bool given_used = options.source < 0;
+  for (int k = 1; k <= solids.Extent(); ++k) {
+    const int solid = k - 1;
+    const std::vector<int> solid_faces = faces_of(index, solids(k));
+    SweepOptions for_solid = options;
+    const bool holds_given = options.source >= 0 &&
+                             std::count(solid_faces.begin(), solid_faces.end(), options.source) > 0;
+    if (options.source >= 0 && !holds_given) for_solid.source = for_solid.target = -1;
+    SolidCaps caps;
+    std::string refusal;
+    try {
+      caps = find_caps(index, solid_faces, for_solid, tol);
+    } catch (const Standard_Failure& e) {
+      caps.why_not = std::string("OpenCASCADE failed on its faces (") +
+                     (e.GetMessageString() ? e.GetMessageString() : "no message") + ")";
+    }
+    if (caps.source < 0) {
+      if (holds_given) {
+        throw InputError(face_name(options.source) + " and " + face_name(options.target) +
+                         " are not the caps of an extrusion: " + caps.why_not);
+      }
+      refusal = "solid " + std::to_string(solid) + " is not an extrusion: " + caps.why_not;
+    } else {
+      given_used = given_used || holds_given;
+      // A refused solid leaves nothing in the mesh.
+      const HexMesh& m = result.mesh;
+      const std::size_t nodes = m.nodes.size(), hexes = m.hexes.size(), sets = m.face_nodes.size(),
+                        swept = m.solids.size();
+      try {
+        sweep_solid(shape, index, solid, solid_faces, caps, for_solid, tol, result.mesh, result.size);
+      } catch (const FacesRefusedError& e) {
+        refusal = "solid " + std::to_string(solid) + ": its source face was not meshed: " + e.what();
+      } catch (const InputError& e) {
+        const std::string what = e.what();
+        refusal = what.rfind("solid ", 0) == 0 ? what : "solid " + std::to_string(solid) + ": " + what;
+      } catch (const Standard_Failure& e) {
+        refusal = "solid " + std::to_string(solid) + ": OpenCASCADE failed on it (" +
+                  std::string(e.GetMessageString() ? e.GetMessageString() : "no message") + ")";
+      }
+      if (!refusal.empty()) {
+        result.mesh.nodes.resize(nodes);
+        result.mesh.hexes.resize(hexes);
+        result.mesh.scaled_jacobian.resize(hexes);
+        result.mesh.face_nodes.resize(sets);
+        result.mesh.solids.resize(swept);
+      }
+    }
+    if (refusal.empty()) continue;
+    if (!options.keep_going) throw InputError(refusal);
+    result.mesh.refused.push_back({solid, refusal});
+  }
+  if (!given_used) throw InputError(face_name(options.source) + " is on no solid of the shape");
+  if (result.mesh.solids.empty()) {
+    throw InputError("no solid could be swept; the first refused: " + result.mesh.refused.front().reason);
+  }
+  return result;
+}
+
+}  // namespace tquad

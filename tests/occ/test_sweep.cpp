@@ -1,0 +1,216 @@
+// sweep_shape on extrusions built here: hexahedra that fill the solid exactly (their
+// volumes sum to the solid's), none inverted, as many as the source's quads times the
+// layers, caps and sides with their nodes; solids that are not extrusions refused
+// with the reason, and kept out of the mesh.
+#include <gtest/gtest.h>
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepGProp.hxx>
+#include <BRep_Builder.hxx>
+#include <GC_MakeCircle.hxx>
+#include <GProp_GProps.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <gp_Ax1.hxx>
+#include <gp_Circ.hxx>
+#include <gp_Pln.hxx>
+
+#include <set>
+
+#include "core/input_error.h"
+#include "occ/model/shape_index.h"
+#include "occ/sweep/sweep.h"
+
+namespace tquad {
+namespace {
+
+double volume_of(const TopoDS_Shape& shape) {
+  GProp_GProps props;
+  BRepGProp::VolumeProperties(shape, props);
+  return props.Mass();
+}
+
+double hexes_volume(const HexMesh& mesh, const SweptSolid& solid) {
+  double sum = 0;
+  for (std::int64_t k = solid.first_hex; k < solid.first_hex + solid.hex_count; ++k) {
+    std::array<Vec3, 8> p;
+    for (int i = 0; i < 8; ++i) p[i] = mesh.nodes[mesh.hexes[k][i]];
+    sum += hex_volume(p);
+  }
+  return sum;
+}
+
+// A 60 x 40 plate, 8 thick, with two holes through it, extruded along z (or `dir`).
+TopoDS_Shape holed_plate(const gp_Vec& dir = gp_Vec(0, 0, 8)) {
+  BRepBuilderAPI_MakeWire outer;
+  const gp_Pnt c[4] = {{0, 0, 0}, {60, 0, 0}, {60, 40, 0}, {0, 40, 0}};
+  for (int i = 0; i < 4; ++i) outer.Add(BRepBuilderAPI_MakeEdge(c[i], c[(i + 1) % 4]).Edge());
+  BRepBuilderAPI_MakeFace face(outer.Wire());
+  for (double x : {18.0, 42.0}) {
+    const gp_Circ circle(gp_Ax2(gp_Pnt(x, 20, 0), gp_Dir(0, 0, 1)), 6);
+    BRepBuilderAPI_MakeWire hole(BRepBuilderAPI_MakeEdge(circle).Edge());
+    face.Add(TopoDS::Wire(hole.Wire().Reversed()));
+  }
+  return BRepPrimAPI_MakePrism(face.Face(), dir).Shape();
+}
+
+// The volume of the solid with its holes' walls (the faces that are not planes, of
+// radius `radius` across the caps, `normal_height` between them) replaced by the
+// polygons of their nodes: each such polygon of n sides leaves its circle's segments
+// in the solid.
+double polygonal_volume(const TopoDS_Shape& shape, const SweepResult& r, double radius, double normal_height) {
+  const ShapeIndex index(shape);
+  const SweptSolid& s = r.mesh.solids[0];
+  double volume = volume_of(shape);
+  for (const auto& [face, nodes] : r.mesh.face_nodes) {
+    if (BRepAdaptor_Surface(index.face(face)).GetType() == GeomAbs_Plane) continue;
+    const double n = static_cast<double>(nodes.size()) / (s.layers + 1);
+    volume += (M_PI - 0.5 * n * std::sin(2 * M_PI / n)) * radius * radius * normal_height;
+  }
+  return volume;
+}
+
+void expect_valid_sweep(const TopoDS_Shape& shape, const SweepResult& r, double normal_height = 0) {
+  ASSERT_EQ(r.mesh.solids.size(), 1u);
+  const SweptSolid& s = r.mesh.solids[0];
+  EXPECT_EQ(r.mesh.hexes.size(), static_cast<std::size_t>(s.hex_count));
+  EXPECT_EQ(s.hex_count % s.layers, 0);
+  for (double sj : r.mesh.scaled_jacobian) ASSERT_GT(sj, 1e-6);
+  const double expected = normal_height > 0 ? polygonal_volume(shape, r, 6.0, normal_height) : volume_of(shape);
+  EXPECT_NEAR(hexes_volume(r.mesh, s), expected, 1e-9 * volume_of(shape));
+  // Every node is in a hexahedron, and each cap's nodes are a layer's.
+  std::set<NodeId> used;
+  for (const Hex& h : r.mesh.hexes) used.insert(h.begin(), h.end());
+  EXPECT_EQ(used.size(), r.mesh.nodes.size());
+}
+
+TEST(Sweep, AnExtrudedPlateWithHolesFillsItsSolidWithHexahedra) {
+  const TopoDS_Shape plate = holed_plate();
+  SweepOptions options;
+  options.face.size = 4.0;
+  const SweepResult r = sweep_shape(plate, options);
+  expect_valid_sweep(plate, r, 8.0);
+  const SweptSolid& s = r.mesh.solids[0];
+  EXPECT_EQ(s.layers, 2);  // 8 / 4
+  EXPECT_NEAR(s.height, 8.0, 1e-9);
+  // The caps are the faces with the holes: the most edges.
+  ASSERT_EQ(r.mesh.face_nodes.size(), 8u);  // 2 caps, 4 sides, 2 hole walls
+  const std::size_t per_layer = r.mesh.nodes.size() / (s.layers + 1);
+  EXPECT_EQ(r.mesh.face_nodes[0].second.size(), per_layer);
+  EXPECT_EQ(r.mesh.face_nodes[1].second.size(), per_layer);
+  for (std::size_t k = 2; k < r.mesh.face_nodes.size(); ++k) {
+    const auto& [face, nodes] = r.mesh.face_nodes[k];
+    EXPECT_GE(nodes.size(), 2u * (s.layers + 1)) << "side face " << face;
+    EXPECT_EQ(nodes.size() % (s.layers + 1), 0u) << "side face " << face;
+  }
+  // Given layers are kept.
+  options.layers = 5;
+  const SweepResult five = sweep_shape(plate, options);
+  EXPECT_EQ(five.mesh.solids[0].layers, 5);
+  EXPECT_EQ(five.mesh.hexes.size() * 2, r.mesh.hexes.size() * 5);
+}
+
+TEST(Sweep, AnObliqueExtrusionIsSweptAlongItsVector) {
+  const TopoDS_Shape plate = holed_plate(gp_Vec(3, -2, 10));
+  SweepOptions options;
+  options.face.size = 5.0;
+  const SweepResult r = sweep_shape(plate, options);
+  expect_valid_sweep(plate, r, 10.0);
+  EXPECT_NEAR(r.mesh.solids[0].height, std::sqrt(9.0 + 4.0 + 100.0), 1e-9);
+}
+
+TEST(Sweep, GivenCapsAreUsedAndWrongOnesNamed) {
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(10, 20, 30).Shape();
+  SweepOptions options;
+  options.face.size = 5.0;
+  const SweepResult any = sweep_shape(box, options);
+  expect_valid_sweep(box, any);
+  // Faces 0 and 1 of a box are its x = 0 and x = 10 sides.
+  options.source = 0;
+  options.target = 1;
+  const SweepResult along_x = sweep_shape(box, options);
+  expect_valid_sweep(box, along_x);
+  EXPECT_EQ(along_x.mesh.solids[0].source, 0);
+  EXPECT_EQ(along_x.mesh.solids[0].layers, 2);
+  options.target = 2;  // a neighbour, not the opposite face
+  try {
+    sweep_shape(box, options);
+    FAIL() << "faces 0 and 2 accepted as caps";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("face 0 and face 2 are not the caps"), std::string::npos) << e.what();
+  }
+  options.target = -1;
+  EXPECT_THROW(sweep_shape(box, options), InputError);  // the source alone
+  options.source = 7;
+  options.target = 0;
+  EXPECT_THROW(sweep_shape(box, options), InputError);  // no face 7
+}
+
+TEST(Sweep, SolidsThatAreNotExtrusionsAreRefusedWithTheReason) {
+  const TopoDS_Shape sphere = BRepPrimAPI_MakeSphere(5).Shape();
+  SweepOptions options;
+  try {
+    sweep_shape(sphere, options);
+    FAIL() << "a sphere swept";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("solid 0 is not an extrusion"), std::string::npos) << e.what();
+  }
+  // A box with a corner scooped out by a ball: no direction has caps and straight sides.
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(10, 10, 10).Shape();
+  const TopoDS_Shape cut = BRepAlgoAPI_Cut(box, BRepPrimAPI_MakeSphere(gp_Pnt(10, 10, 10), 4).Shape()).Shape();
+  try {
+    sweep_shape(cut, options);
+    FAIL() << "a box with a scooped corner swept";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is not an extrusion"), std::string::npos) << e.what();
+  }
+  // With keep_going the extrusion beside them is swept, and they are listed.
+  TopoDS_Compound both;
+  BRep_Builder builder;
+  builder.MakeCompound(both);
+  builder.Add(both, BRepBuilderAPI_Transform(sphere, gp_Trsf()).Shape());
+  gp_Trsf away;
+  away.SetTranslation(gp_Vec(100, 0, 0));
+  builder.Add(both, BRepBuilderAPI_Transform(holed_plate(), away).Shape());
+  options.keep_going = true;
+  options.face.size = 4.0;
+  const SweepResult r = sweep_shape(both, options);
+  ASSERT_EQ(r.mesh.solids.size(), 1u);
+  EXPECT_EQ(r.mesh.solids[0].solid, 1);
+  ASSERT_EQ(r.mesh.refused.size(), 1u);
+  EXPECT_EQ(r.mesh.refused[0].solid, 0);
+  EXPECT_NE(r.mesh.refused[0].reason.find("not an extrusion"), std::string::npos) << r.mesh.refused[0].reason;
+  for (double sj : r.mesh.scaled_jacobian) EXPECT_GT(sj, 1e-6);
+  // Only the sphere: nothing swept is an error, keep_going or not.
+  EXPECT_THROW(sweep_shape(sphere, options), InputError);
+  // Faces alone are no solid.
+  EXPECT_THROW(sweep_shape(BRepBuilderAPI_MakeFace(gp_Pln(), 0, 1, 0, 1).Face(), options), InputError);
+}
+
+TEST(Sweep, HexahedronMeasures) {
+  std::array<Vec3, 8> cube{Vec3{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  EXPECT_NEAR(hex_scaled_jacobian(cube), 1.0, 1e-12);
+  EXPECT_NEAR(hex_volume(cube), 1.0, 1e-12);
+  std::array<Vec3, 8> flipped = cube;
+  std::swap(flipped[1], flipped[3]);
+  std::swap(flipped[5], flipped[7]);
+  EXPECT_LT(hex_scaled_jacobian(flipped), 0);
+  EXPECT_NEAR(hex_volume(flipped), -1.0, 1e-12);
+  std::array<Vec3, 8> sheared = cube;
+  for (int i = 4; i < 8; ++i) sheared[i].x += 1;  // 45 degrees
+  EXPECT_NEAR(hex_scaled_jacobian(sheared), std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(hex_volume(sheared), 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace tquad
