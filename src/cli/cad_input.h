@@ -35,6 +35,9 @@ CadInputMesh mesh_cad_input(const MeshCommand& command, std::ostream& err);
 // 2 with `error` the InputError's message; 3 when memory ran out; 1 with `error` the
 // message of any other failure. No exception crosses the module's edge.
 inline constexpr const char* kCadModuleFile = "tquad_cad.so";
+// A symbol of the module, which is loaded at the first call and kept; runtime_error
+// when the module or the symbol is missing (an incomplete installation).
+void* cad_module_symbol(const char* name);
 inline constexpr const char* kCadEntryPoint = "tquad_mesh_cad_input";
 using MeshCadInputEntry = int (*)(const MeshCommand& command, std::ostream& err, CadInputMesh& out,
                                   std::string& error);

@@ -27,7 +27,9 @@ std::string program_folder() {
   return file.substr(0, file.find_last_of('/'));
 }
 
-MeshCadInputEntry load_entry() {
+}  // namespace
+
+void* cad_module_symbol(const char* name) {
   const std::string module = program_folder() + kModuleFolder + kCadModuleFile;
   void* handle = dlopen(module.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (handle == nullptr) {
@@ -35,15 +37,13 @@ MeshCadInputEntry load_entry() {
     throw std::runtime_error("cannot load the CAD layer (" + module + "): " + (why ? why : "unknown") +
                              "; the installation is incomplete");
   }
-  auto entry = reinterpret_cast<MeshCadInputEntry>(dlsym(handle, kCadEntryPoint));
-  if (entry == nullptr) throw std::runtime_error(module + " has no " + kCadEntryPoint);
-  return entry;
+  void* symbol = dlsym(handle, name);
+  if (symbol == nullptr) throw std::runtime_error(module + " has no " + name);
+  return symbol;
 }
 
-}  // namespace
-
 CadInputMesh mesh_cad_input(const MeshCommand& command, std::ostream& err) {
-  const MeshCadInputEntry entry = load_entry();
+  const auto entry = reinterpret_cast<MeshCadInputEntry>(cad_module_symbol(kCadEntryPoint));
   CadInputMesh out;
   std::string error;
   switch (entry(command, err, out, error)) {

@@ -19,6 +19,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/mesh_command.h"
+#include "cli/sweep_command.h"
 #include "core/mesh_option_schema.h"
 #include "occ/read/isolated_reader.h"
 
@@ -137,13 +138,66 @@ int run_cli(int argc, char** argv) {
       ->check(CLI::Range(0, 1024).description(""));
   mesh->footer(exit_status_text);
 
+  tquad::SweepCommand sweep_command;
+  std::string sweep_report;
+  CLI::App* sweep = app.add_subcommand(
+      "sweep", "Sweep the solids of a CAD shape into hexahedra (extrusions; other solids are refused)");
+  sweep->add_option("input", sweep_command.input, "A CAD shape (.step .stp .iges .igs .brep) with solids")
+      ->type_name("INPUT")
+      ->required();
+  sweep->add_option("-o,--output", sweep_command.output,
+                    "Output file: .inp (CalculiX/Abaqus C3D8, an element set SOLID<k> per solid,\n"
+                    "a node set FACE<f> and a surface SFACE<f> per face), .vtu (VTK hexahedra) or .json")
+      ->type_name("OUTPUT")
+      ->required();
+  sweep->add_option("--report", sweep_report, "Print a JSON report instead of the summary")
+      ->type_name("FORMAT")
+      ->check(CLI::IsMember({"json"}));
+  sweep->add_option("--size", sweep_command.sweep.face.size, option_help("size", false))
+      ->type_name("H")
+      ->check(length_check("--size", false));
+  sweep->add_option("--min-size", sweep_command.sweep.face.min_size, option_help("min_size", false))
+      ->type_name("H")
+      ->check(length_check("--min-size", true));
+  sweep->add_option("--layers", sweep_command.sweep.layers,
+                    "Hexahedra through each solid, from source to target (default: the solid's\n"
+                    "height / H, rounded, at least 1)")
+      ->type_name("N")
+      ->check(CLI::Range(1, 1000000).description(""));
+  CLI::Option* source = sweep->add_option("--source", sweep_command.sweep.source,
+                                          "The source face (0-based, as FreeCAD's Shape.Faces order) of the solid\n"
+                                          "that holds it; with --target. Default: found per solid")
+                            ->type_name("F")
+                            ->check(CLI::Range(0, INT_MAX).description(""));
+  CLI::Option* target = sweep->add_option("--target", sweep_command.sweep.target, "The target face, with --source")
+                            ->type_name("F")
+                            ->check(CLI::Range(0, INT_MAX).description(""));
+  source->needs(target);
+  target->needs(source);
+  sweep->add_flag("--keep-going", sweep_command.sweep.keep_going,
+                  "Sweep and write the other solids when one is refused, and list the refused\n"
+                  "ones; without it a refused solid stops the job (exit 2)");
+  sweep->add_flag("!--no-smooth", sweep_command.sweep.face.smooth, option_help("smooth", false,
+                  "On by default for the source faces; this flag turns it off."));
+  sweep->add_option("--threads", sweep_command.sweep.face.threads, option_help("threads", false))
+      ->type_name("N")
+      ->check(CLI::Range(0, 1024).description(""));
+  sweep->add_option("--read-timeout", sweep_command.read.seconds, option_help("read_timeout", false))
+      ->type_name("S")
+      ->check(CLI::Range(tquad::kMinReadSeconds, tquad::kMaxReadSeconds));
+  sweep->footer(exit_status_text);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    std::cerr << "tquad: error: " << e.what() << " (see 'tquad" << (mesh->parsed() ? " mesh" : "")
-              << " --help')\n";
+    const char* sub = mesh->parsed() ? " mesh" : sweep->parsed() ? " sweep" : "";
+    std::cerr << "tquad: error: " << e.what() << " (see 'tquad" << sub << " --help')\n";
     return 2;
+  }
+  if (sweep->parsed()) {
+    sweep_command.report_json = sweep_report == "json";
+    return tquad::run_sweep_command(sweep_command, std::cout, std::cerr);
   }
   command.report_json = report == "json";
   return tquad::run_mesh_command(command, std::cout, std::cerr);

@@ -47,7 +47,7 @@ void write_inp(std::ostream& out, const ShapeMesh& mesh) {
     text += std::to_string(i + 1);
     for (double c : {p.x, p.y, p.z}) {
       text += ", ";
-      append_double(text, c);
+      append_double_within(text, c, kInpFieldWidth);
     }
     text += '\n';
     flush_if_large(out, text);

@@ -13,7 +13,8 @@
 //
 // Element k + 1 is ShapeMesh quad k (ids continuous from 1 over the faces), its nodes
 // in the quad's (counter-clockwise) order, so the shell normal is the face's normal.
-// Coordinates are the shortest text that reads back to the same double. A face record
+// Coordinates are the shortest text that reads back to the same double, or, where that
+// is wider than CalculiX's 20-character field, the most digits that fit. A face record
 // with no quads gets no block; refused faces are listed as comments. Lines stay under
 // CalculiX's 132 characters.
 #pragma once

@@ -14,6 +14,14 @@ namespace tquad {
 // here can express them).
 void append_double(std::string& text, double value);
 
+// The same, in at most `width` characters: the shortest round-trip text when it fits,
+// else the most significant digits that fit (CalculiX reads a field of at most 20
+// characters, and "-4.269692791533339e-15" has 22).
+void append_double_within(std::string& text, double value, int width);
+
+// CalculiX's widest field.
+inline constexpr int kInpFieldWidth = 20;
+
 // Writes `text` to `out` and clears it once it holds more than about 1 MiB.
 void flush_if_large(std::ostream& out, std::string& text);
 

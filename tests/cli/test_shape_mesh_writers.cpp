@@ -141,6 +141,32 @@ TEST(InpWriter, LinesFitCalculixAndEmptyFacesGetNoBlock) {
   EXPECT_EQ(inp_blocks(text).size(), 4u);
 }
 
+TEST(InpWriter, EveryNumberFitsCalculixsTwentyCharacterField) {
+  // CalculiX stops at a field over 20 characters ("*ERROR reading *NODE"); the shortest
+  // round-trip text of a coordinate next to zero has 22.
+  ShapeMesh mesh = two_face_mesh();
+  const std::vector<double> values = {-4.269692791533339e-15, -1.0000000000000002e-300, 1.2345678901234567e+300,
+                                      0.1 + 0.2, -123456.78901234567};
+  for (std::size_t i = 0; i < values.size(); ++i) mesh.nodes[i] = {values[i], -values[i], values[i] * 0.5};
+  const std::string text = write_to_string(write_inp, mesh);
+  const std::vector<std::string> lines = split_lines(text);
+  const auto first = std::find(lines.begin(), lines.end(), "*NODE, NSET=NALL");
+  ASSERT_NE(first, lines.end());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const std::string& line = *(first + 1 + static_cast<std::ptrdiff_t>(i));
+    std::istringstream fields(line);
+    std::vector<double> read;
+    for (std::string field; std::getline(fields, field, ',');) {
+      const std::string trimmed = field.substr(field.find_first_not_of(' '));
+      EXPECT_LE(trimmed.size(), 20u) << line;
+      read.push_back(std::stod(trimmed));
+    }
+    ASSERT_EQ(read.size(), 4u) << line;
+    EXPECT_NEAR(read[1], values[i], 1e-12 * std::abs(values[i])) << line;  // at least 13 digits
+    EXPECT_NEAR(read[2], -values[i], 1e-12 * std::abs(values[i])) << line;
+  }
+}
+
 TEST(InpWriter, EmptyMeshHasNoElements) {
   const std::string text = write_to_string(write_inp, ShapeMesh{});
   EXPECT_NE(text.find("*NODE"), std::string::npos);

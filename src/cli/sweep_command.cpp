@@ -1,0 +1,111 @@
+#include "cli/sweep_command.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <new>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/cad_input.h"
+#include "core/input_error.h"
+#include "io/atomic_file_writer.h"
+#include "io/hex_writers.h"
+#include "occ/read/shape_formats.h"
+
+namespace tquad {
+
+namespace {
+
+std::string one_line(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  return text;
+}
+
+std::string fixed(double value, int digits) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", digits, value);
+  return buffer;
+}
+
+SweepOutput sweep_through_module(const SweepCommand& command) {
+  const auto entry = reinterpret_cast<SweepCadInputEntry>(cad_module_symbol(kSweepEntryPoint));
+  SweepOutput out;
+  std::string error;
+  switch (entry(command, out, error)) {
+    case 0: return out;
+    case 2: throw InputError(error);
+    case 3: throw std::bad_alloc();
+    default: throw std::runtime_error(error);
+  }
+}
+
+int run(const SweepCommand& command, std::ostream& out, std::ostream& err) {
+  if (!is_shape_path(command.input)) {
+    throw InputError(command.input + ": tquad sweep takes a CAD shape (.step .stp .iges .igs .brep)");
+  }
+  if (!is_hex_output(command.output)) {
+    throw InputError(command.output + ": a swept mesh is written as .inp, .vtu or .json");
+  }
+  check_output_location(command.output);
+  const SweepOutput result = sweep_through_module(command);
+  for (const std::string& w : result.read_warnings) err << "tquad: warning: " << one_line(w) << "\n";
+  for (const RefusedSolid& r : result.mesh.refused) err << "tquad: warning: not swept: " << one_line(r.reason) << "\n";
+  write_hex_file(command.output, result.mesh);
+  const std::vector<double>& sj = result.mesh.scaled_jacobian;
+  const double worst = sj.empty() ? 0.0 : *std::min_element(sj.begin(), sj.end());
+  double sum = 0;
+  for (double v : sj) sum += v;
+  const double mean = sj.empty() ? 0.0 : sum / static_cast<double>(sj.size());
+  if (command.report_json) {
+    nlohmann::ordered_json report;
+    report["nodes"] = result.mesh.nodes.size();
+    report["hexes"] = result.mesh.hexes.size();
+    report["edge_size"] = result.size;
+    report["quality"] = {{"scaled_jacobian", {{"min", worst}, {"avg", mean}}}};
+    nlohmann::ordered_json solids = nlohmann::ordered_json::array();
+    for (const SweptSolid& s : result.mesh.solids) {
+      solids.push_back({{"solid", s.solid}, {"source", s.source}, {"target", s.target}, {"layers", s.layers},
+                        {"height", s.height}, {"hexes", s.hex_count}});
+    }
+    report["solids"] = solids;
+    nlohmann::ordered_json refused = nlohmann::ordered_json::array();
+    for (const RefusedSolid& r : result.mesh.refused) refused.push_back({{"solid", r.solid}, {"reason", r.reason}});
+    report["refused_solids"] = refused;
+    report["read_warnings"] = result.read_warnings;
+    out << report.dump(2) << "\n";
+    return 0;
+  }
+  out << command.output << ": " << result.mesh.hexes.size() << " hexahedra, " << result.mesh.nodes.size()
+      << " nodes; " << result.mesh.solids.size() << " solid(s) swept";
+  if (!result.mesh.refused.empty()) out << ", " << result.mesh.refused.size() << " refused";
+  out << "; element size " << fixed(result.size, 4) << "; scaled Jacobian min " << fixed(worst, 3) << ", mean "
+      << fixed(mean, 3) << "\n";
+  for (const SweptSolid& s : result.mesh.solids) {
+    out << "  solid " << s.solid << ": face " << s.source << " to face " << s.target << ", " << s.layers
+        << " layers, " << s.hex_count << " hexahedra\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+int run_sweep_command(const SweepCommand& command, std::ostream& out, std::ostream& err) {
+  try {
+    return run(command, out, err);
+  } catch (const InputError& e) {
+    err << "tquad: error: " << one_line(e.what()) << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    err << "tquad: error: internal failure: out of memory (use a larger --size or fewer --layers)\n";
+    return 1;
+  } catch (const std::exception& e) {
+    err << "tquad: error: internal failure: " << one_line(e.what()) << "\n";
+    return 1;
+  } catch (...) {
+    err << "tquad: error: internal failure: unknown exception\n";
+    return 1;
+  }
+}
+
+}  // namespace tquad
