@@ -2,6 +2,7 @@
 // (tquad/__init__.py) is the public face; this module is private to it.
 #include <atomic>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -21,6 +22,7 @@
 #include "io/shape_mesh_check.h"
 #include "core/mesh/shape_mesh.h"
 #include "occ/shape_mesher.h"
+#include "occ/sweep/sweep.h"
 #include "occ/read/isolated_reader.h"
 #include "occ/read/shape_reader.h"
 
@@ -290,6 +292,94 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
   return out;
 }
 
+// Solids swept into hexahedra (occ/sweep/sweep.h), as plain Python data.
+py::dict sweep_shape_binding(const std::string& brep_text_or_path, double size, double min_size, int layers,
+                             int source, int target, bool keep_going, bool smooth, int threads,
+                             double read_timeout) {
+  if (!(size >= 0) || !std::isfinite(size)) {
+    throw InputError("size must be a finite positive number (or 0 for the default), not " + std::to_string(size));
+  }
+  if (!(min_size >= 0) || !std::isfinite(min_size)) {
+    throw InputError("min_size must be a finite number of 0 (no floor) or more, not " + std::to_string(min_size));
+  }
+  if (read_timeout != 0 && !(read_timeout >= kMinReadSeconds && read_timeout <= kMaxReadSeconds)) {
+    throw InputError("read_timeout must be between 0.001 and 1e6 seconds, not " + std::to_string(read_timeout));
+  }
+  SweepOptions options;
+  options.face.size = size;
+  options.face.min_size = min_size;
+  options.face.smooth = smooth;
+  options.face.threads = threads;
+  options.layers = layers;
+  options.source = source;
+  options.target = target;
+  options.keep_going = keep_going;
+  ReadLimits limits;
+  limits.seconds = read_timeout;
+  SweepResult result;
+  std::vector<std::string> read_warnings;
+  {
+    py::gil_scoped_release release;
+    const ReadShape read = looks_like_brep_text(brep_text_or_path) ? read_brep_text_isolated(brep_text_or_path, limits)
+                                                                   : read_shape_isolated(brep_text_or_path, limits);
+    read_warnings = read.warnings;
+    for (int f : read.invalid_faces) options.face.damaged_faces[f] = kInvalidFaceReason;
+    result = sweep_shape(read.shape, options);
+  }
+  const HexMesh& mesh = result.mesh;
+  py::array_t<double> nodes({static_cast<py::ssize_t>(mesh.nodes.size()), py::ssize_t{3}});
+  auto n = nodes.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < n.shape(0); ++i) {
+    n(i, 0) = mesh.nodes[i].x;
+    n(i, 1) = mesh.nodes[i].y;
+    n(i, 2) = mesh.nodes[i].z;
+  }
+  py::array_t<std::int32_t> hexes({static_cast<py::ssize_t>(mesh.hexes.size()), py::ssize_t{8}});
+  auto h = hexes.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < h.shape(0); ++i) {
+    for (int k = 0; k < 8; ++k) h(i, k) = mesh.hexes[static_cast<std::size_t>(i)][k];
+  }
+  py::list solids, refused;
+  for (const SweptSolid& s : mesh.solids) {
+    py::dict d;
+    d["solid"] = s.solid;
+    d["source"] = s.source;
+    d["target"] = s.target;
+    d["layers"] = s.layers;
+    d["height"] = s.height;
+    d["first_hex"] = s.first_hex;
+    d["hex_count"] = s.hex_count;
+    solids.append(d);
+  }
+  for (const RefusedSolid& r : mesh.refused) {
+    py::dict d;
+    d["solid"] = r.solid;
+    d["reason"] = r.reason;
+    refused.append(d);
+  }
+  // A face two solids share is one set.
+  std::map<int, std::vector<std::int32_t>> merged;
+  for (const auto& [face, ids] : mesh.face_nodes) merged[face].insert(merged[face].end(), ids.begin(), ids.end());
+  py::dict face_nodes;
+  for (auto& [face, ids] : merged) {
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    py::array_t<std::int32_t> a(static_cast<py::ssize_t>(ids.size()));
+    std::copy(ids.begin(), ids.end(), a.mutable_data());
+    face_nodes[py::int_(face)] = a;
+  }
+  py::dict out;
+  out["nodes"] = nodes;
+  out["hexes"] = hexes;
+  out["scaled_jacobian"] = numpy_copy(mesh.scaled_jacobian);
+  out["solids"] = solids;
+  out["refused_solids"] = refused;
+  out["face_nodes"] = face_nodes;
+  out["edge_size"] = result.size;
+  out["read_warnings"] = read_warnings;
+  return out;
+}
+
 }  // namespace
 }  // namespace tquad
 
@@ -333,6 +423,9 @@ PYBIND11_MODULE(_core, m) {
     }
     return rows;
   });
+  m.def("sweep_shape", &tquad::sweep_shape_binding, py::arg("brep_text_or_path"), py::arg("size"),
+        py::arg("min_size"), py::arg("layers"), py::arg("source"), py::arg("target"), py::arg("keep_going"),
+        py::arg("smooth"), py::arg("threads"), py::arg("read_timeout"));
   m.def("mesh_shape", &tquad::mesh_shape_binding, py::arg("brep_text_or_path"), py::arg("size"),
         py::arg("faces"), py::arg("corners"), py::arg("keep_going"), py::arg("allow_inverted"),
         py::arg("threads"), py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("smooth"),

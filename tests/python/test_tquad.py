@@ -203,6 +203,45 @@ class MeshShapeTest(unittest.TestCase):
             tquad.mesh_shape(path, progress=broken)
 
 
+class SweepShapeTest(unittest.TestCase):
+    """tquad.sweep_shape: the same sweep as `tquad sweep`, as numpy arrays, and the
+    same refusals as ValueError."""
+
+    def test_a_cylinder_is_swept_into_hexahedra_that_fill_it(self):
+        m = tquad.sweep_shape(os.path.join(SHAPES, "cylinder.brep"), size=3.0)
+        self.assertEqual(m.hexes.shape[1], 8)
+        self.assertEqual(m.hexes.dtype, np.int32)
+        self.assertEqual(len(m.solids), 1)
+        solid = m.solids[0]
+        self.assertEqual(solid["hex_count"], len(m.hexes))
+        self.assertEqual(len(m.hexes) % solid["layers"], 0)
+        self.assertAlmostEqual(solid["height"], 30.0, places=9)
+        self.assertGreater(m.scaled_jacobian.min(), 0.5)
+        # Each hexahedron is its source quad's prism: node i + 4 is node i moved along
+        # the cylinder's axis by height / layers.
+        step = m.nodes[m.hexes[:, 4:]] - m.nodes[m.hexes[:, :4]]
+        np.testing.assert_allclose(np.abs(step[..., 2]), 30.0 / solid["layers"], rtol=1e-12)
+        np.testing.assert_allclose(step[..., :2], 0, atol=1e-12)
+        # The caps' node sets are a layer each; the side's, the rim in every layer.
+        caps = [m.face_nodes[solid["source"]], m.face_nodes[solid["target"]]]
+        self.assertEqual(len(caps[0]), len(m.nodes) // (solid["layers"] + 1))
+        side = [f for f in m.face_nodes if f not in (solid["source"], solid["target"])]
+        self.assertEqual(len(side), 1)
+        radius = np.hypot(m.nodes[m.face_nodes[side[0]], 0], m.nodes[m.face_nodes[side[0]], 1])
+        np.testing.assert_allclose(radius, 10.0, rtol=1e-9)
+
+    def test_refusals_are_value_errors(self):
+        with self.assertRaisesRegex(ValueError, "no solid to sweep"):
+            tquad.sweep_shape(os.path.join(SHAPES, "plate_with_hole.brep"))
+        with self.assertRaisesRegex(ValueError, "face 0 and face 1 are not the caps"):
+            tquad.sweep_shape(os.path.join(SHAPES, "cylinder.brep"), source=0, target=1)
+        for bad in ({"source": 1}, {"layers": -1}, {"layers": 2.5}, {"source": "1", "target": 2},
+                    {"size": -1.0}, {"threads": -1}):
+            with self.subTest(**{k: repr(v) for k, v in bad.items()}):
+                with self.assertRaises(ValueError):
+                    tquad.sweep_shape(os.path.join(SHAPES, "cylinder.brep"), **bad)
+
+
 class QualityFieldsTest(unittest.TestCase):
     """Per-quad quality as the module returns it, as the .vtu carries it, and its
     histogram: the same values everywhere."""

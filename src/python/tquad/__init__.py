@@ -33,8 +33,8 @@ REFUSAL_CODES = {
     "internal": "the mesher itself failed (a bug)",
 }
 
-__all__ = ["Cancelled", "FacesRefused", "Mesh", "REFUSAL_CODES", "mesh_boundary", "mesh_option_schema",
-           "mesh_shape"]
+__all__ = ["Cancelled", "FacesRefused", "Mesh", "REFUSAL_CODES", "SweptMesh", "mesh_boundary",
+           "mesh_option_schema", "mesh_shape", "sweep_shape"]
 
 _MAX_QUADS = 100_000_000
 
@@ -252,3 +252,66 @@ def _document_options(doc: str) -> str:
 
 
 mesh_shape.__doc__ = _document_options(mesh_shape.__doc__ or "")
+
+
+class SweptMesh:
+    """Hexahedra swept from quads (sweep_shape).
+
+    Attributes:
+        nodes: N x 3 float64.
+        hexes: M x 8 int32, 0-based, in VTK's hexahedron and CalculiX's C3D8 order (the
+            bottom face 0-3, node i + 4 above node i).
+        scaled_jacobian: M float64, each hexahedron's worst corner (1: a cube).
+        solids: per swept solid, ``solid``, ``source`` and ``target`` (face indices),
+            ``layers``, ``height``, ``first_hex``, ``hex_count``.
+        refused_solids: with keep_going, ``{"solid", "reason"}`` per solid not swept.
+        face_nodes: per CAD face of a swept solid (0-based), its node indices (int32).
+        edge_size: the target edge length used.
+        read_warnings: what the reader let through with a warning.
+    """
+
+    def __init__(self, data: dict) -> None:
+        self.nodes = data["nodes"]
+        self.hexes = data["hexes"]
+        self.scaled_jacobian = data["scaled_jacobian"]
+        self.solids = list(data["solids"])
+        self.refused_solids = list(data["refused_solids"])
+        self.face_nodes = dict(data["face_nodes"])
+        self.edge_size = float(data["edge_size"])
+        self.read_warnings = list(data["read_warnings"])
+
+    def __repr__(self) -> str:
+        return (f"SweptMesh({len(self.nodes)} nodes, {len(self.hexes)} hexahedra, "
+                f"{len(self.solids)} solids, {len(self.refused_solids)} refused)")
+
+
+def sweep_shape(brep_text_or_path: str, *, size: float = 0.0, min_size: float = 0.0, layers: int = 0,
+                source: Optional[int] = None, target: Optional[int] = None, keep_going: bool = False,
+                smooth: bool = True, threads: int = 0, read_timeout: Optional[float] = None) -> SweptMesh:
+    """Sweep the solids of a CAD shape into hexahedra (as ``tquad sweep``).
+
+    A solid is swept when it is an extrusion: two planar caps that are translates of
+    each other, joined by side faces each running from cap to cap in one piece. The
+    source cap is meshed as mesh_shape meshes a face; the target gets the same quads
+    moved; the layers are the exact translation. Other solids are refused.
+
+    Args:
+        brep_text_or_path: BREP text or the path of a .step/.stp, .iges/.igs or .brep file.
+        size, min_size, smooth, threads, read_timeout: as for mesh_shape (the source faces).
+        layers: hexahedra through each solid; 0 takes round(height / size), at least 1.
+        source, target: the caps (face indices, 0-based), both or neither; None finds
+            them per solid.
+        keep_going: sweep the other solids when one is refused (listed in
+            ``refused_solids``); otherwise a refused solid raises ValueError.
+
+    Raises:
+        ValueError: unreadable shape, no solid, a solid that is not sweepable (without
+            keep_going), given caps that are not an extrusion's, or bad options.
+    """
+    if (source is None) != (target is None):
+        raise ValueError("give both source and target, or neither")
+    return SweptMesh(_core.sweep_shape(
+        str(brep_text_or_path), float(size), float(min_size), _integer(layers, "layers", 0, 1_000_000),
+        -1 if source is None else _integer(source, "source", 0),
+        -1 if target is None else _integer(target, "target", 0), bool(keep_going), bool(smooth),
+        _integer(threads, "threads", 0, 1024), 0.0 if read_timeout is None else float(read_timeout)))

@@ -2,8 +2,8 @@ from typing import Callable, Dict, Iterable, List, Mapping, Optional, Sequence, 
 
 import numpy as np
 
-__all__ = ["Cancelled", "FacesRefused", "Mesh", "REFUSAL_CODES", "mesh_boundary", "mesh_option_schema",
-           "mesh_shape"]
+__all__ = ["Cancelled", "FacesRefused", "Mesh", "REFUSAL_CODES", "SweptMesh", "mesh_boundary",
+           "mesh_option_schema", "mesh_shape", "sweep_shape"]
 
 class Cancelled(RuntimeError): ...
 class FacesRefused(ValueError):
@@ -50,3 +50,18 @@ def mesh_shape(brep_text_or_path: str, *, size: float = ..., faces: Optional[Ite
                progress: Optional[Callable[[str, int, int], Optional[bool]]] = ...,
                read_timeout: Optional[float] = ..., best_corners: bool = ..., min_size: float = ...,
                order: int = ..., sew: bool = ...) -> Mesh: ...
+
+class SweptMesh:
+    nodes: np.ndarray
+    hexes: np.ndarray
+    scaled_jacobian: np.ndarray
+    solids: List[dict]
+    refused_solids: List[dict]
+    face_nodes: Dict[int, np.ndarray]
+    edge_size: float
+    read_warnings: List[str]
+    def __init__(self, data: dict) -> None: ...
+
+def sweep_shape(brep_text_or_path: str, *, size: float = ..., min_size: float = ..., layers: int = ...,
+                source: Optional[int] = ..., target: Optional[int] = ..., keep_going: bool = ...,
+                smooth: bool = ..., threads: int = ..., read_timeout: Optional[float] = ...) -> SweptMesh: ...
