@@ -15,7 +15,9 @@
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepBndLib.hxx>
 #include <BRepGProp.hxx>
+#include <Bnd_Box.hxx>
 #include <BRep_Builder.hxx>
 #include <GC_MakeCircle.hxx>
 #include <GProp_GProps.hxx>
@@ -25,7 +27,9 @@
 #include <gp_Circ.hxx>
 #include <gp_Pln.hxx>
 
+#include <map>
 #include <set>
+#include <utility>
 
 #include "core/input_error.h"
 #include "occ/model/shape_index.h"
@@ -80,12 +84,47 @@ double polygonal_volume(const TopoDS_Shape& shape, const SweepResult& r, double 
   return volume;
 }
 
+// Every quad face of the hexahedra is in one (the boundary) or two (inside) of them,
+// and the boundary is the two caps' quads and each layer's quads along the source's
+// rim: a conforming quad mesh of the solid's faces.
+void expect_conforming(const HexMesh& mesh) {
+  constexpr int kFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  std::map<std::array<NodeId, 4>, int> faces;
+  for (const Hex& h : mesh.hexes) {
+    for (const auto& f : kFaces) {
+      std::array<NodeId, 4> key{h[f[0]], h[f[1]], h[f[2]], h[f[3]]};
+      std::sort(key.begin(), key.end());
+      ++faces[key];
+    }
+  }
+  long long boundary = 0;
+  for (const auto& [key, count] : faces) {
+    ASSERT_LE(count, 2) << "a quad face in " << count << " hexahedra";
+    boundary += count == 1;
+  }
+  long long expected = 0;
+  for (const SweptSolid& s : mesh.solids) {
+    const long long per_layer = s.hex_count / s.layers;
+    std::map<std::pair<NodeId, NodeId>, int> rim;  // the source quads' edges
+    for (std::int64_t k = s.first_hex; k < s.first_hex + s.hex_count; ++k) {
+      const Hex& h = mesh.hexes[k];
+      if ((k - s.first_hex) % s.layers != 0) continue;  // each quad's first layer
+      for (int i = 0; i < 4; ++i) ++rim[std::minmax(h[i], h[(i + 1) % 4])];
+    }
+    long long rim_edges = 0;
+    for (const auto& [edge, count] : rim) rim_edges += count == 1;
+    expected += 2 * per_layer + s.layers * rim_edges;
+  }
+  EXPECT_EQ(boundary, expected);
+}
+
 void expect_valid_sweep(const TopoDS_Shape& shape, const SweepResult& r, double normal_height = 0) {
   ASSERT_EQ(r.mesh.solids.size(), 1u);
   const SweptSolid& s = r.mesh.solids[0];
   EXPECT_EQ(r.mesh.hexes.size(), static_cast<std::size_t>(s.hex_count));
   EXPECT_EQ(s.hex_count % s.layers, 0);
   for (double sj : r.mesh.scaled_jacobian) ASSERT_GT(sj, 1e-6);
+  expect_conforming(r.mesh);
   const double expected = normal_height > 0 ? polygonal_volume(shape, r, 6.0, normal_height) : volume_of(shape);
   EXPECT_NEAR(hexes_volume(r.mesh, s), expected, 1e-9 * volume_of(shape));
   // Every node is in a hexahedron, and each cap's nodes are a layer's.
@@ -195,6 +234,70 @@ TEST(Sweep, SolidsThatAreNotExtrusionsAreRefusedWithTheReason) {
   EXPECT_THROW(sweep_shape(sphere, options), InputError);
   // Faces alone are no solid.
   EXPECT_THROW(sweep_shape(BRepBuilderAPI_MakeFace(gp_Pln(), 0, 1, 0, 1).Face(), options), InputError);
+}
+
+// A profile in the xz plane (x from r0 to r0 + 10, z from 0 to 10, a hole of radius 2
+// in its middle) turned by `angle` about the z axis.
+TopoDS_Shape revolved(double angle, double r0 = 10.0) {
+  BRepBuilderAPI_MakeWire outer;
+  const gp_Pnt c[4] = {{r0, 0, 0}, {r0 + 10, 0, 0}, {r0 + 10, 0, 10}, {r0, 0, 10}};
+  for (int i = 0; i < 4; ++i) outer.Add(BRepBuilderAPI_MakeEdge(c[i], c[(i + 1) % 4]).Edge());
+  BRepBuilderAPI_MakeFace face(outer.Wire());
+  const gp_Circ circle(gp_Ax2(gp_Pnt(r0 + 5, 0, 5), gp_Dir(0, 1, 0)), 2);
+  // The outer wire runs clockwise about +y (the face's normal is -y): the hole's
+  // circle about +y already runs the other way round.
+  face.Add(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(circle).Edge()).Wire());
+  return BRepPrimAPI_MakeRevol(face.Face(), gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), angle).Shape();
+}
+
+TEST(Sweep, PartialRevolutionsAreSweptByTheExactRotation) {
+  for (double degrees : {90.0, 180.0, 270.0}) {
+    SCOPED_TRACE(std::to_string(degrees) + " degrees");
+    const double angle = degrees * M_PI / 180;
+    const TopoDS_Shape ring = revolved(angle);
+    Bnd_Box box;
+    BRepBndLib::Add(ring, box);
+    SweepOptions options;
+    options.face.size = std::sqrt(box.SquareExtent()) / 50;  // the size the 1% below holds at
+    const SweepResult r = sweep_shape(ring, options);
+    ASSERT_EQ(r.mesh.solids.size(), 1u);
+    const SweptSolid& s = r.mesh.solids[0];
+    // The longest path (radius 20) over the size.
+    EXPECT_EQ(s.layers, static_cast<int>(std::lround(20 * angle / options.face.size)));
+    for (double sj : r.mesh.scaled_jacobian) ASSERT_GT(sj, 0.2);
+    expect_conforming(r.mesh);
+    // Each layer is the one before it turned by angle / layers about z: the same radius
+    // and height, the polar angle one step on.
+    const double step = angle / s.layers;
+    for (const Hex& h : r.mesh.hexes) {
+      for (int i = 0; i < 4; ++i) {
+        const Vec3 a = r.mesh.nodes[h[i]], b = r.mesh.nodes[h[i + 4]];
+        ASSERT_NEAR(std::hypot(a.x, a.y), std::hypot(b.x, b.y), 1e-9 * 30);
+        ASSERT_NEAR(a.z, b.z, 1e-9 * 30);
+        const double turned = std::remainder(std::atan2(b.y, b.x) - std::atan2(a.y, a.x), 2 * M_PI);
+        ASSERT_NEAR(std::abs(turned), step, 1e-9);
+      }
+    }
+    // Chords inside the arcs and a polygon inside the hole: within 1% of the volume.
+    EXPECT_NEAR(hexes_volume(r.mesh, s), volume_of(ring), 0.01 * volume_of(ring));
+  }
+}
+
+TEST(Sweep, RevolutionsThatTouchTheirAxisOrCloseAreRefused) {
+  SweepOptions options;
+  options.face.size = 2.0;
+  try {
+    const SweepResult r = sweep_shape(revolved(M_PI / 2, 0.0), options);
+    FAIL() << "a profile on the axis swept: " << r.mesh.hexes.size() << " hexahedra";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("touches the axis of its revolution"), std::string::npos) << e.what();
+  }
+  try {
+    sweep_shape(revolved(2 * M_PI), options);  // a whole ring: no caps
+    FAIL() << "a whole ring swept";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not an extrusion or a revolution"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Sweep, HexahedronMeasures) {

@@ -12,7 +12,9 @@
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
+#include <gp_Lin.hxx>
 #include <gp_Pln.hxx>
+#include <gp_Trsf.hxx>
 #include <gp_Vec.hxx>
 
 #include <algorithm>
@@ -60,48 +62,125 @@ gp_Pnt centroid(const std::vector<gp_Pnt>& points) {
 
 std::string face_name(int f) { return "face " + std::to_string(f); }
 
-// Why faces s and t are not the caps of an extrusion of the solid whose faces are
-// `solid_faces`, or "" with `d` the vector from s to t.
-std::string extrusion_caps(const ShapeIndex& index, const std::vector<int>& solid_faces, int s, int t, double tol,
-                           gp_Vec& d) {
+// How the source cap becomes the target: a translation by `d` (an extrusion) or a
+// rotation by `angle` about `axis` (a revolution); `at(p, f)` is the fraction f of it.
+struct SweepMotion {
+  bool rotation = false;
+  gp_Vec d;
+  gp_Ax1 axis;
+  double angle = 0.0;
+
+  gp_Pnt at(const gp_Pnt& p, double f) const {
+    if (!rotation) return p.Translated(f * d);
+    gp_Trsf turn;
+    turn.SetRotation(axis, f * angle);
+    return p.Transformed(turn);
+  }
+  // The direction p moves in at the start.
+  gp_Vec direction(const gp_Pnt& p) const {
+    if (!rotation) return d;
+    return gp_Vec(axis.Direction()).Crossed(gp_Vec(axis.Location(), p)) * (angle > 0 ? 1.0 : -1.0);
+  }
+  // The path length of p from source to target.
+  double length(const gp_Pnt& p) const {
+    if (!rotation) return d.Magnitude();
+    return std::abs(angle) * gp_Lin(axis).Distance(p);
+  }
+};
+
+// Whether `motion` takes every vertex of `vs` onto one of `vt`.
+bool maps_vertices(const SweepMotion& motion, const std::vector<gp_Pnt>& vs, const std::vector<gp_Pnt>& vt, double tol) {
+  return std::all_of(vs.begin(), vs.end(), [&](const gp_Pnt& v) {
+    const gp_Pnt moved = motion.at(v, 1.0);
+    return std::any_of(vt.begin(), vt.end(), [&](const gp_Pnt& w) { return w.Distance(moved) <= tol; });
+  });
+}
+
+// Whether edge e, joining the caps, is the path of one point under `motion`: a
+// straight segment equal to d, or an arc of `angle` about the axis.
+bool is_path(const TopoDS_Edge& edge, const SweepMotion& motion, double tol) {
+  const BRepAdaptor_Curve curve(edge);
+  const gp_Pnt start = curve.Value(curve.FirstParameter()), end = curve.Value(curve.LastParameter());
+  if (!motion.rotation) {
+    const gp_Vec along(start, end);
+    return curve.GetType() == GeomAbs_Line &&
+           std::min((along - motion.d).Magnitude(), (along + motion.d).Magnitude()) <= tol;
+  }
+  if (curve.GetType() != GeomAbs_Circle) return false;
+  const gp_Ax1 circle = curve.Circle().Axis();
+  const bool coaxial = circle.IsParallel(motion.axis, 1e-9) &&
+                       gp_Lin(motion.axis).Distance(circle.Location()) <= tol;
+  const double span = curve.LastParameter() - curve.FirstParameter();
+  return coaxial && std::abs(span - std::abs(motion.angle)) <= 1e-7;
+}
+
+// Why faces s and t are not the caps of a sweep of the solid whose faces are
+// `solid_faces`, or "" with `motion` taking s onto t: first as an extrusion, then as
+// a revolution about the axis of a side face's circular edge.
+std::string sweep_caps(const ShapeIndex& index, const std::vector<int>& solid_faces, int s, int t, double tol,
+                       SweepMotion& motion) {
   for (int f : {s, t}) {
     if (BRepAdaptor_Surface(index.face(f)).GetType() != GeomAbs_Plane) return face_name(f) + " is not planar";
   }
   const std::vector<gp_Pnt> vs = vertex_points(index.face(s)), vt = vertex_points(index.face(t));
   if (vs.size() != vt.size()) return face_name(s) + " and " + face_name(t) + " have different numbers of vertices";
-  d = gp_Vec(centroid(vs), centroid(vt));
-  for (const gp_Pnt& v : vs) {
-    const gp_Pnt moved = v.Translated(d);
-    const bool found = std::any_of(vt.begin(), vt.end(), [&](const gp_Pnt& w) { return w.Distance(moved) <= tol; });
-    if (!found) return face_name(t) + " is not " + face_name(s) + " moved along one vector";
-  }
-  const gp_Dir normal = BRepAdaptor_Surface(index.face(s)).Plane().Axis().Direction();
-  if (std::abs(d.Dot(gp_Vec(normal))) <= tol) return face_name(s) + " and " + face_name(t) + " lie in one plane";
   const std::set<int> source_edges = edges_of(index, s), target_edges = edges_of(index, t);
-  const std::size_t sides = solid_faces.size() - 2;
-  if (sides != source_edges.size()) {
-    return "its " + std::to_string(sides) + " side faces are not one per edge of " + face_name(s) + " (" +
-           std::to_string(source_edges.size()) + "): side faces split along the sweep are not swept yet";
-  }
+  std::vector<int> joining;  // the side faces' edges that are on neither cap
   for (int f : solid_faces) {
     if (f == s || f == t) continue;
     for (int e : edges_of(index, f)) {
-      if (source_edges.count(e) || target_edges.count(e)) continue;
-      const BRepAdaptor_Curve curve(index.edge(e));
-      const gp_Vec along(curve.Value(curve.FirstParameter()), curve.Value(curve.LastParameter()));
-      const bool straight = curve.GetType() == GeomAbs_Line;
-      if (!straight || std::min((along - d).Magnitude(), (along + d).Magnitude()) > tol) {
-        return "side " + face_name(f) + ": edge " + std::to_string(e) +
-               " is not a straight segment from the source to the target";
-      }
+      if (!source_edges.count(e) && !target_edges.count(e)) joining.push_back(e);
     }
   }
-  return "";
+  std::vector<SweepMotion> candidates;
+  SweepMotion shift;
+  shift.d = gp_Vec(centroid(vs), centroid(vt));
+  const gp_Dir normal = BRepAdaptor_Surface(index.face(s)).Plane().Axis().Direction();
+  if (std::abs(shift.d.Dot(gp_Vec(normal))) > tol) candidates.push_back(shift);
+  for (int e : joining) {
+    const BRepAdaptor_Curve curve(index.edge(e));
+    if (curve.GetType() != GeomAbs_Circle) continue;
+    const double span = curve.LastParameter() - curve.FirstParameter();
+    if (!(span > 1e-6 && span < 2 * M_PI - 1e-6)) continue;
+    for (double sign : {1.0, -1.0}) {
+      SweepMotion turn;
+      turn.rotation = true;
+      turn.axis = curve.Circle().Axis();
+      turn.angle = sign * span;
+      candidates.push_back(turn);
+    }
+    break;  // one circle gives the axis; is_path checks the others
+  }
+  std::string why = face_name(t) + " is not " + face_name(s) + " moved along one vector or turned about an axis";
+  for (const SweepMotion& candidate : candidates) {
+    if (!maps_vertices(candidate, vs, vt, tol)) continue;
+    if (candidate.rotation) {
+      for (const gp_Pnt& v : vs) {
+        if (gp_Lin(candidate.axis).Distance(v) <= tol) {
+          return face_name(s) + " touches the axis of its revolution: the hexahedra there would be wedges";
+        }
+      }
+    }
+    for (int e : joining) {
+      if (!is_path(index.edge(e), candidate, tol)) {
+        return "edge " + std::to_string(e) + " of a side face is not " +
+               (candidate.rotation ? "an arc about the axis" : "a straight segment") + " from the source to the target";
+      }
+    }
+    const std::size_t sides = solid_faces.size() - 2;
+    if (sides != source_edges.size()) {
+      return "its " + std::to_string(sides) + " side faces are not one per edge of " + face_name(s) + " (" +
+             std::to_string(source_edges.size()) + "): side faces split along the sweep are not swept yet";
+    }
+    motion = candidate;
+    return "";
+  }
+  return why;
 }
 
 struct SolidCaps {
   int source = -1, target = -1;
-  gp_Vec d;
+  SweepMotion motion;
   std::string why_not;  // when none: the first reason met
 };
 
@@ -115,22 +194,23 @@ SolidCaps find_caps(const ShapeIndex& index, const std::vector<int>& solid_faces
   for (int s : solid_faces) {
     for (int t : solid_faces) {
       if (s == t || (given && (s != options.source || t != options.target))) continue;
-      gp_Vec d;
-      const std::string why = extrusion_caps(index, solid_faces, s, t, tol, d);
+      SweepMotion motion;
+      const std::string why = sweep_caps(index, solid_faces, s, t, tol, motion);
       if (!why.empty()) {
-        if (best.why_not.empty() || given) best.why_not = why;
+        // The most telling reason: one found past the caps' own test.
+        if (best.why_not.empty() || given || why.find(" is not planar") == std::string::npos) best.why_not = why;
         continue;
       }
       const std::size_t edges = edges_of(index, s).size();
       if (best.source < 0 || edges > best_edges) {
         best.source = s;
         best.target = t;
-        best.d = d;
+        best.motion = motion;
         best_edges = edges;
       }
     }
   }
-  if (best.source < 0 && best.why_not.empty()) best.why_not = "it has no two planar faces that are translates";
+  if (best.source < 0 && best.why_not.empty()) best.why_not = "it has no two planar faces";
   return best;
 }
 
@@ -161,16 +241,23 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
       if (compact.emplace(n, static_cast<NodeId>(base.size())).second) base.push_back(source.mesh.nodes[n]);
     }
   }
-  const Vec3 d = to_vec3(caps.d);
-  const double height = caps.d.Magnitude();
-  const int layers = options.layers > 0 ? options.layers : std::max(1, static_cast<int>(std::lround(height / size)));
+  const SweepMotion& motion = caps.motion;
+  // The layers: the longest path over the size, and for a revolution at most 45
+  // degrees a layer (the rule curved edges follow, edge_discretization.h).
+  double height = 0.0;
+  for (const Vec3& p : base) height = std::max(height, motion.length(gp_Pnt(p.x, p.y, p.z)));
+  int layers = std::max(1, static_cast<int>(std::lround(height / size)));
+  if (motion.rotation) layers = std::max(layers, static_cast<int>(std::ceil(std::abs(motion.angle) / (M_PI / 4) - 1e-9)));
+  if (options.layers > 0) layers = options.layers;
   const long long count = static_cast<long long>(base.size());
   if (count * (layers + 1) > static_cast<long long>(INT32_MAX)) {
     throw InputError("solid " + std::to_string(solid) + ": the sweep would have over 2^31 nodes; use fewer layers or a larger size");
   }
   const NodeId offset = static_cast<NodeId>(out.nodes.size());
   for (int k = 0; k <= layers; ++k) {
-    for (const Vec3& p : base) out.nodes.push_back(p + (static_cast<double>(k) / layers) * d);
+    for (const Vec3& p : base) {
+      out.nodes.push_back(k == 0 ? p : to_vec3(motion.at(gp_Pnt(p.x, p.y, p.z), static_cast<double>(k) / layers)));
+    }
   }
   const auto at = [&](NodeId n, int k) { return static_cast<NodeId>(offset + k * count + compact.at(n)); };
   SweptSolid record;
@@ -184,7 +271,10 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
   for (const Quad& q : source.mesh.quads) {
     const Vec3 normal = cross(source.mesh.nodes[q[2]] - source.mesh.nodes[q[0]],
                               source.mesh.nodes[q[3]] - source.mesh.nodes[q[1]]);
-    const Quad bottom = dot(normal, d) > 0 ? q : Quad{q[0], q[3], q[2], q[1]};
+    const Vec3 middle = 0.25 * (source.mesh.nodes[q[0]] + source.mesh.nodes[q[1]] + source.mesh.nodes[q[2]] +
+                                source.mesh.nodes[q[3]]);
+    const Vec3 along = to_vec3(motion.direction(gp_Pnt(middle.x, middle.y, middle.z)));
+    const Quad bottom = dot(normal, along) > 0 ? q : Quad{q[0], q[3], q[2], q[1]};
     for (int k = 0; k < layers; ++k) {
       Hex h;
       for (int i = 0; i < 4; ++i) {
@@ -268,9 +358,9 @@ SweepResult sweep_shape(const TopoDS_Shape& shape, const SweepOptions& options) 
     if (caps.source < 0) {
       if (holds_given) {
         throw InputError(face_name(options.source) + " and " + face_name(options.target) +
-                         " are not the caps of an extrusion: " + caps.why_not);
+                         " are not the caps of an extrusion or a revolution: " + caps.why_not);
       }
-      refusal = "solid " + std::to_string(solid) + " is not an extrusion: " + caps.why_not;
+      refusal = "solid " + std::to_string(solid) + " is not an extrusion or a revolution: " + caps.why_not;
     } else {
       given_used = given_used || holds_given;
       // A refused solid leaves nothing in the mesh.

@@ -1,18 +1,21 @@
 // sweep_shape: hexahedra by sweeping a source face's quad mesh through a solid.
 //
-// A solid is swept when it is an extrusion: two planar faces of it (the caps, source
-// and target) are translates of each other by a vector d not in their plane, and
-// every other face is a side face running from source to target in one piece: each
-// of its edges lies on a cap or is a straight segment equal to d (so there are as
-// many side faces as source edges). The source face is meshed by the face mesher
-// (mesh_shape, its options); the target gets the same quads moved by d, not a mesh
-// of its own; the layers are the source's nodes moved by k / N of d (the exact
-// transform of an extrusion), so every hexahedron is the source quad's prism and its
-// scaled Jacobian is the quad's times the sine of d's angle to the cap.
+// A solid is swept when it is an extrusion or a partial revolution: two planar faces
+// of it (the caps, source and target) are the same face moved by a vector d not in
+// their plane, or turned by an angle under a full turn about an axis (the axis of a
+// side face's circular edge); and every other face is a side face running from
+// source to target in one piece: each of its edges lies on a cap or is the path of a
+// point (a straight segment equal to d, or an arc of that angle about the axis), so
+// there are as many side faces as source edges. The source face is meshed by the face
+// mesher (mesh_shape, its options); the target gets the same quads moved, not a mesh
+// of its own; the layers are the source's nodes moved by k / N of the motion (the
+// exact transform). An extrusion's hexahedron is its quad's prism, its scaled Jacobian
+// the quad's times the sine of d's angle to the cap.
 //
-// Not swept yet (refused, with the reason and the faces): revolutions, sweeps along
-// curves and lofts; side faces split along the sweep; caps that are not planar. Solids
-// are swept one by one: solids sharing a face do not share its nodes.
+// Refused, with the reason and the faces: a revolution's profile touching its axis
+// (wedges); full revolutions (no caps), sweeps along curves and lofts; side faces
+// split along the sweep; caps that are not planar. Solids are swept one by one:
+// solids sharing a face do not share its nodes.
 #pragma once
 
 #include "core/mesh/hex_mesh.h"

@@ -290,10 +290,11 @@ def sweep_shape(brep_text_or_path: str, *, size: float = 0.0, min_size: float = 
                 smooth: bool = True, threads: int = 0, read_timeout: Optional[float] = None) -> SweptMesh:
     """Sweep the solids of a CAD shape into hexahedra (as ``tquad sweep``).
 
-    A solid is swept when it is an extrusion: two planar caps that are translates of
-    each other, joined by side faces each running from cap to cap in one piece. The
+    A solid is swept when it is an extrusion or a partial revolution: two planar caps
+    that are the same face moved or turned (under a full turn, the profile clear of
+    the axis), joined by side faces each running from cap to cap in one piece. The
     source cap is meshed as mesh_shape meshes a face; the target gets the same quads
-    moved; the layers are the exact translation. Other solids are refused.
+    moved; the layers are the exact translation or rotation. Other solids are refused.
 
     Args:
         brep_text_or_path: BREP text or the path of a .step/.stp, .iges/.igs or .brep file.
