@@ -114,32 +114,50 @@ bool is_path(const TopoDS_Edge& edge, const SweepMotion& motion, double tol) {
   return coaxial && std::abs(span - std::abs(motion.angle)) <= 1e-7;
 }
 
-// Why faces s and t are not the caps of a sweep of the solid whose faces are
-// `solid_faces`, or "" with `motion` taking s onto t: first as an extrusion, then as
-// a revolution about the axis of a side face's circular edge.
-std::string sweep_caps(const ShapeIndex& index, const std::vector<int>& solid_faces, int s, int t, double tol,
-                       SweepMotion& motion) {
-  for (int f : {s, t}) {
-    if (BRepAdaptor_Surface(index.face(f)).GetType() != GeomAbs_Plane) return face_name(f) + " is not planar";
-  }
-  const std::vector<gp_Pnt> vs = vertex_points(index.face(s)), vt = vertex_points(index.face(t));
-  if (vs.size() != vt.size()) return face_name(s) + " and " + face_name(t) + " have different numbers of vertices";
-  const std::set<int> source_edges = edges_of(index, s), target_edges = edges_of(index, t);
-  std::vector<int> joining;  // the side faces' edges that are on neither cap
-  for (int f : solid_faces) {
-    if (f == s || f == t) continue;
-    for (int e : edges_of(index, f)) {
-      if (!source_edges.count(e) && !target_edges.count(e)) joining.push_back(e);
+// What the caps search reads of a solid's faces, computed once: a pair test then
+// costs a comparison of vertices, not a walk over the topology.
+struct SolidFaces {
+  std::vector<int> faces;                // shape face indices
+  std::map<int, bool> planar;
+  std::map<int, std::vector<gp_Pnt>> vertices;
+  std::map<int, std::set<int>> edges;
+  std::vector<int> circles;              // edges of the solid that are circular arcs
+
+  SolidFaces(const ShapeIndex& index, std::vector<int> solid_faces) : faces(std::move(solid_faces)) {
+    std::set<int> all_edges;
+    for (int f : faces) {
+      planar[f] = BRepAdaptor_Surface(index.face(f)).GetType() == GeomAbs_Plane;
+      vertices[f] = vertex_points(index.face(f));
+      edges[f] = edges_of(index, f);
+      all_edges.insert(edges[f].begin(), edges[f].end());
+    }
+    for (int e : all_edges) {
+      if (BRepAdaptor_Curve(index.edge(e)).GetType() == GeomAbs_Circle) circles.push_back(e);
     }
   }
+};
+
+// Why faces s and t are not the caps of a sweep of the solid, or "" with `motion`
+// taking s onto t: first as an extrusion, then as a revolution about the axis of a
+// circular edge joining them.
+std::string sweep_caps(const ShapeIndex& index, const SolidFaces& solid, int s, int t, double tol,
+                       SweepMotion& motion) {
+  for (int f : {s, t}) {
+    if (!solid.planar.at(f)) return face_name(f) + " is not planar";
+  }
+  const std::vector<gp_Pnt>& vs = solid.vertices.at(s);
+  const std::vector<gp_Pnt>& vt = solid.vertices.at(t);
+  if (vs.size() != vt.size()) return face_name(s) + " and " + face_name(t) + " have different numbers of vertices";
+  const std::set<int>& source_edges = solid.edges.at(s);
+  const std::set<int>& target_edges = solid.edges.at(t);
   std::vector<SweepMotion> candidates;
   SweepMotion shift;
   shift.d = gp_Vec(centroid(vs), centroid(vt));
   const gp_Dir normal = BRepAdaptor_Surface(index.face(s)).Plane().Axis().Direction();
   if (std::abs(shift.d.Dot(gp_Vec(normal))) > tol) candidates.push_back(shift);
-  for (int e : joining) {
+  for (int e : solid.circles) {
+    if (source_edges.count(e) || target_edges.count(e)) continue;
     const BRepAdaptor_Curve curve(index.edge(e));
-    if (curve.GetType() != GeomAbs_Circle) continue;
     const double span = curve.LastParameter() - curve.FirstParameter();
     if (!(span > 1e-6 && span < 2 * M_PI - 1e-6)) continue;
     for (double sign : {1.0, -1.0}) {
@@ -151,7 +169,6 @@ std::string sweep_caps(const ShapeIndex& index, const std::vector<int>& solid_fa
     }
     break;  // one circle gives the axis; is_path checks the others
   }
-  std::string why = face_name(t) + " is not " + face_name(s) + " moved along one vector or turned about an axis";
   for (const SweepMotion& candidate : candidates) {
     if (!maps_vertices(candidate, vs, vt, tol)) continue;
     if (candidate.rotation) {
@@ -161,13 +178,15 @@ std::string sweep_caps(const ShapeIndex& index, const std::vector<int>& solid_fa
         }
       }
     }
-    for (int e : joining) {
-      if (!is_path(index.edge(e), candidate, tol)) {
-        return "edge " + std::to_string(e) + " of a side face is not " +
+    for (int f : solid.faces) {
+      if (f == s || f == t) continue;
+      for (int e : solid.edges.at(f)) {
+        if (source_edges.count(e) || target_edges.count(e) || is_path(index.edge(e), candidate, tol)) continue;
+        return "edge " + std::to_string(e) + " of side " + face_name(f) + " is not " +
                (candidate.rotation ? "an arc about the axis" : "a straight segment") + " from the source to the target";
       }
     }
-    const std::size_t sides = solid_faces.size() - 2;
+    const std::size_t sides = solid.faces.size() - 2;
     if (sides != source_edges.size()) {
       return "its " + std::to_string(sides) + " side faces are not one per edge of " + face_name(s) + " (" +
              std::to_string(source_edges.size()) + "): side faces split along the sweep are not swept yet";
@@ -175,7 +194,7 @@ std::string sweep_caps(const ShapeIndex& index, const std::vector<int>& solid_fa
     motion = candidate;
     return "";
   }
-  return why;
+  return face_name(t) + " is not " + face_name(s) + " moved along one vector or turned about an axis";
 }
 
 struct SolidCaps {
@@ -188,6 +207,7 @@ struct SolidCaps {
 // edges (the profile; on a box every pair is valid), the lower face first on a tie.
 SolidCaps find_caps(const ShapeIndex& index, const std::vector<int>& solid_faces, const SweepOptions& options,
                     double tol) {
+  const SolidFaces solid(index, solid_faces);
   SolidCaps best;
   const bool given = options.source >= 0;
   std::size_t best_edges = 0;
@@ -195,13 +215,15 @@ SolidCaps find_caps(const ShapeIndex& index, const std::vector<int>& solid_faces
     for (int t : solid_faces) {
       if (s == t || (given && (s != options.source || t != options.target))) continue;
       SweepMotion motion;
-      const std::string why = sweep_caps(index, solid_faces, s, t, tol, motion);
+      const std::string why = sweep_caps(index, solid, s, t, tol, motion);
       if (!why.empty()) {
-        // The most telling reason: one found past the caps' own test.
-        if (best.why_not.empty() || given || why.find(" is not planar") == std::string::npos) best.why_not = why;
+        // The most telling reason: one found past the caps' own tests.
+        const bool telling = why.find(" is not planar") == std::string::npos &&
+                             why.find(" numbers of vertices") == std::string::npos;
+        if (best.why_not.empty() || given || telling) best.why_not = why;
         continue;
       }
-      const std::size_t edges = edges_of(index, s).size();
+      const std::size_t edges = solid.edges.at(s).size();
       if (best.source < 0 || edges > best_edges) {
         best.source = s;
         best.target = t;
