@@ -65,8 +65,16 @@ int run(const SweepCommand& command, std::ostream& out, std::ostream& err) {
     report["quality"] = {{"scaled_jacobian", {{"min", worst}, {"avg", mean}}}};
     nlohmann::ordered_json solids = nlohmann::ordered_json::array();
     for (const SweptSolid& s : result.mesh.solids) {
-      solids.push_back({{"solid", s.solid}, {"source", s.source}, {"target", s.target}, {"layers", s.layers},
-                        {"height", s.height}, {"hexes", s.hex_count}});
+      nlohmann::ordered_json row = {{"solid", s.solid},   {"source", s.source}, {"target", s.target},
+                                    {"layers", s.layers}, {"height", s.height}, {"hexes", s.hex_count}};
+      if (s.rotation) {
+        row["rotation"] = {{"point", {s.point.x, s.point.y, s.point.z}},
+                           {"direction", {s.vector.x, s.vector.y, s.vector.z}},
+                           {"angle", s.angle}};
+      } else {
+        row["translation"] = {s.vector.x, s.vector.y, s.vector.z};
+      }
+      solids.push_back(row);
     }
     report["solids"] = solids;
     nlohmann::ordered_json refused = nlohmann::ordered_json::array();

@@ -198,6 +198,27 @@ void write_hex_json(std::ostream& out, const HexMesh& mesh) {
             std::to_string(s.source) + ", \"target\": " + std::to_string(s.target) + ", \"layers\": " +
             std::to_string(s.layers) + ", \"height\": ";
     append_double(text, s.height);
+    const auto vec = [&](const Vec3& v) {
+      text += "[";
+      append_double(text, v.x);
+      text += ", ";
+      append_double(text, v.y);
+      text += ", ";
+      append_double(text, v.z);
+      text += "]";
+    };
+    if (s.rotation) {
+      text += ", \"rotation\": {\"point\": ";
+      vec(s.point);
+      text += ", \"direction\": ";
+      vec(s.vector);
+      text += ", \"angle\": ";
+      append_double(text, s.angle);
+      text += "}";
+    } else {
+      text += ", \"translation\": ";
+      vec(s.vector);
+    }
     text += ", \"first_hex\": " + std::to_string(s.first_hex) + ", \"hex_count\": " + std::to_string(s.hex_count) + "}";
   }
   text += "],\n\"refused_solids\": [";

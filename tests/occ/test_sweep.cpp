@@ -262,6 +262,10 @@ TEST(Sweep, PartialRevolutionsAreSweptByTheExactRotation) {
     const SweepResult r = sweep_shape(ring, options);
     ASSERT_EQ(r.mesh.solids.size(), 1u);
     const SweptSolid& s = r.mesh.solids[0];
+    EXPECT_TRUE(s.rotation);
+    EXPECT_NEAR(std::abs(s.angle), angle, 1e-9);
+    EXPECT_NEAR(std::abs(s.vector.z), 1.0, 1e-12);
+    EXPECT_NEAR(std::hypot(s.point.x, s.point.y), 0.0, 1e-9);
     // The longest path (radius 20) over the size.
     EXPECT_EQ(s.layers, static_cast<int>(std::lround(20 * angle / options.face.size)));
     for (double sj : r.mesh.scaled_jacobian) ASSERT_GT(sj, 0.2);

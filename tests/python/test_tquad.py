@@ -216,6 +216,8 @@ class SweepShapeTest(unittest.TestCase):
         self.assertEqual(solid["hex_count"], len(m.hexes))
         self.assertEqual(len(m.hexes) % solid["layers"], 0)
         self.assertAlmostEqual(solid["height"], 30.0, places=9)
+        np.testing.assert_allclose(np.abs(solid["translation"]), [0, 0, 30.0], atol=1e-9)
+        self.assertNotIn("rotation", solid)
         self.assertGreater(m.scaled_jacobian.min(), 0.5)
         # Each hexahedron is its source quad's prism: node i + 4 is node i moved along
         # the cylinder's axis by height / layers.

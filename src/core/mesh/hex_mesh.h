@@ -22,7 +22,12 @@ struct SweptSolid {
   int solid = 0;             // the shape's solid (0-based, in TopExp order)
   int source = 0, target = 0;  // its caps (shape face indices, 0-based)
   int layers = 0;            // hexahedra from source to target
-  double height = 0.0;       // the sweep's length
+  double height = 0.0;       // the longest path of a source node
+  // The motion from source to target: a translation by `vector`, or a rotation by
+  // `angle` (radians, right-handed) about the axis through `point` along `vector`.
+  bool rotation = false;
+  Vec3 vector, point;
+  double angle = 0.0;
   std::int64_t first_hex = 0, hex_count = 0;
 };
 

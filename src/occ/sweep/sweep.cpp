@@ -288,6 +288,10 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
   record.target = caps.target;
   record.layers = layers;
   record.height = height;
+  record.rotation = motion.rotation;
+  record.vector = motion.rotation ? to_vec3(gp_Vec(motion.axis.Direction())) : to_vec3(motion.d);
+  record.point = motion.rotation ? to_vec3(motion.axis.Location()) : Vec3{};
+  record.angle = motion.angle;
   record.first_hex = static_cast<std::int64_t>(out.hexes.size());
   long long bad = 0;
   for (const Quad& q : source.mesh.quads) {

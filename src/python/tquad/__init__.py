@@ -263,7 +263,9 @@ class SweptMesh:
             bottom face 0-3, node i + 4 above node i).
         scaled_jacobian: M float64, each hexahedron's worst corner (1: a cube).
         solids: per swept solid, ``solid``, ``source`` and ``target`` (face indices),
-            ``layers``, ``height``, ``first_hex``, ``hex_count``.
+            ``layers``, ``height`` (the longest path), ``first_hex``, ``hex_count``, and
+            ``translation`` (x, y, z) or ``rotation`` {``point``, ``direction``,
+            ``angle`` in radians}.
         refused_solids: with keep_going, ``{"solid", "reason"}`` per solid not swept.
         face_nodes: per CAD face of a swept solid (0-based), its node indices (int32).
         edge_size: the target edge length used.
