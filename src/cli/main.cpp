@@ -177,6 +177,11 @@ int run_cli(int argc, char** argv) {
   sweep->add_flag("--keep-going", sweep_command.sweep.keep_going,
                   "Sweep and write the other solids when one is refused, and list the refused\n"
                   "ones; without it a refused solid stops the job (exit 2)");
+  sweep->add_option("--order", sweep_command.sweep.face.order,
+                    "1: eight-node hexahedra (C3D8); 2: twenty-node (C3D20), the middle of every edge\n"
+                    "on the CAD curve or surface it stands for, or on its node's path")
+      ->type_name("1|2")
+      ->check(CLI::IsMember({1, 2}).description(""));
   sweep->add_flag("!--no-smooth", sweep_command.sweep.face.smooth, option_help("smooth", false,
                   "On by default for the source faces; this flag turns it off."));
   sweep->add_option("--threads", sweep_command.sweep.face.threads, option_help("threads", false))

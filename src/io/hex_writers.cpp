@@ -64,12 +64,21 @@ void check_hex_mesh(const HexMesh& mesh) {
   if (mesh.scaled_jacobian.size() != mesh.hexes.size()) {
     throw std::invalid_argument("the hexahedral mesh's quality list does not match its hexahedra");
   }
+  if (mesh.second_order() && (mesh.mid_nodes.size() != mesh.hexes.size() || mesh.jacobian_ratio.size() != mesh.hexes.size())) {
+    throw std::invalid_argument("the hexahedral mesh's edge middles do not match its hexahedra");
+  }
+  for (const auto& m : mesh.mid_nodes) {
+    for (NodeId n : m) {
+      if (n < 0 || n >= count) throw std::invalid_argument("an edge middle names node " + std::to_string(n) + " of " + std::to_string(count));
+    }
+  }
 }
 
 void write_hex_inp(std::ostream& out, const HexMesh& mesh) {
   check_hex_mesh(mesh);
+  const std::string type = mesh.second_order() ? "C3D20" : "C3D8";
   std::string text = "** TemplateQuad sweep: " + std::to_string(mesh.nodes.size()) + " nodes, " +
-                     std::to_string(mesh.hexes.size()) + " C3D8 elements, " + std::to_string(mesh.solids.size()) +
+                     std::to_string(mesh.hexes.size()) + " " + type + " elements, " + std::to_string(mesh.solids.size()) +
                      " solids\n";
   for (const RefusedSolid& r : mesh.refused) text += "** not swept: " + r.reason.substr(0, 110) + "\n";
   text += "*NODE, NSET=NALL\n";
@@ -83,10 +92,18 @@ void write_hex_inp(std::ostream& out, const HexMesh& mesh) {
     flush_if_large(out, text);
   }
   for (const SweptSolid& s : mesh.solids) {
-    text += "*ELEMENT, TYPE=C3D8, ELSET=SOLID" + std::to_string(s.solid) + "\n";
+    text += "*ELEMENT, TYPE=" + type + ", ELSET=SOLID" + std::to_string(s.solid) + "\n";
     for (std::int64_t k = s.first_hex; k < s.first_hex + s.hex_count; ++k) {
       text += std::to_string(k + 1);
-      for (NodeId n : mesh.hexes[k]) text += ", " + std::to_string(n + 1);
+      // At most 16 entries a line (the element number and 15 nodes), then a
+      // continuation line: C3D20's 21 entries take two.
+      int entries = 1;
+      for (NodeId n : mesh.element_nodes(static_cast<std::size_t>(k))) {
+        text += entries == 16 ? ",\n" : ", ";
+        if (entries == 16) entries = 0;
+        text += std::to_string(n + 1);
+        ++entries;
+      }
       text += "\n";
       flush_if_large(out, text);
     }
@@ -140,18 +157,21 @@ void write_hex_vtu(std::ostream& out, const HexMesh& mesh) {
     flush_if_large(out, text);
   }
   text += "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (const Hex& h : mesh.hexes) {
-    for (int i = 0; i < 8; ++i) text += std::to_string(h[i]) + (i == 7 ? "\n" : " ");
+  const int per = mesh.nodes_per_element();
+  for (std::size_t k = 0; k < mesh.hexes.size(); ++k) {
+    const std::vector<NodeId> ids = mesh.element_nodes(k);
+    for (int i = 0; i < per; ++i) text += std::to_string(ids[i]) + (i + 1 == per ? "\n" : " ");
     flush_if_large(out, text);
   }
   text += "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
   for (std::size_t k = 0; k < mesh.hexes.size(); ++k) {
-    text += std::to_string(8 * (k + 1)) + "\n";
+    text += std::to_string(static_cast<std::size_t>(per) * (k + 1)) + "\n";
     flush_if_large(out, text);
   }
   text += "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+  const std::string cell_type = mesh.second_order() ? "25\n" : "12\n";  // VTK's (quadratic) hexahedron
   for (std::size_t k = 0; k < mesh.hexes.size(); ++k) {
-    text += "12\n";
+    text += cell_type;
     flush_if_large(out, text);
   }
   text += "</DataArray>\n</Cells>\n<CellData Scalars=\"scaled_jacobian\">\n"
@@ -188,7 +208,8 @@ void write_hex_json(std::ostream& out, const HexMesh& mesh) {
   text += "],\n\"hexes\": [";
   for (std::size_t k = 0; k < mesh.hexes.size(); ++k) {
     text += k ? ",\n[" : "\n[";
-    for (int i = 0; i < 8; ++i) text += std::to_string(mesh.hexes[k][i]) + (i == 7 ? "]" : ", ");
+    const std::vector<NodeId> ids = mesh.element_nodes(k);
+    for (std::size_t i = 0; i < ids.size(); ++i) text += std::to_string(ids[i]) + (i + 1 == ids.size() ? "]" : ", ");
     flush_if_large(out, text);
   }
   text += "],\n\"solids\": [";

@@ -1,14 +1,14 @@
 // Writers of swept hexahedral meshes (core/mesh/hex_mesh.h), each atomic
 // (atomic_file_writer.h):
 //
-// - .inp (Abaqus / CalculiX): *NODE (NSET=NALL), one *ELEMENT block of C3D8 per swept
-//   solid (ELSET=SOLID<k>), ELSET EALL; per CAD face of a swept solid a node set
+// - .inp (Abaqus / CalculiX): *NODE (NSET=NALL), one *ELEMENT block of C3D8 (C3D20 at
+//   second order, on two lines) per swept solid (ELSET=SOLID<k>), ELSET EALL; per CAD face of a swept solid a node set
 //   FACE<f> and an element surface SFACE<f> (TYPE=ELEMENT, the C3D8 faces S1..S6 on
 //   it) for supports and pressures. Ids are 1-based: node k + 1 is mesh node k,
 //   element k + 1 hexahedron k. Refused solids are listed as comments.
-// - .vtu (VTK XML, ASCII): VTK_HEXAHEDRON (type 12) cells, cell data scaled_jacobian
-//   and solid.
-// - .json: {"nodes": [[x, y, z], ...], "hexes": [[8 node ids], ...] (0-based),
+// - .vtu (VTK XML, ASCII): VTK_HEXAHEDRON (type 12) or VTK_QUADRATIC_HEXAHEDRON (25)
+//   cells, cell data scaled_jacobian and solid.
+// - .json: {"nodes": [[x, y, z], ...], "hexes": [[8 or 20 node ids], ...] (0-based),
 //   "solids": [...], "refused_solids": [...], "face_nodes": {"<face>": [ids]}}.
 //
 // Coordinates are the shortest text that reads back to the same double (in .inp, within

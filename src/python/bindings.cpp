@@ -295,7 +295,7 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
 // Solids swept into hexahedra (occ/sweep/sweep.h), as plain Python data.
 py::dict sweep_shape_binding(const std::string& brep_text_or_path, double size, double min_size, int layers,
                              int source, int target, bool keep_going, bool smooth, int threads,
-                             double read_timeout) {
+                             double read_timeout, int order) {
   if (!(size >= 0) || !std::isfinite(size)) {
     throw InputError("size must be a finite positive number (or 0 for the default), not " + std::to_string(size));
   }
@@ -310,6 +310,7 @@ py::dict sweep_shape_binding(const std::string& brep_text_or_path, double size, 
   options.face.min_size = min_size;
   options.face.smooth = smooth;
   options.face.threads = threads;
+  options.face.order = order;  // checked by mesh_shape (1 or 2)
   options.layers = layers;
   options.source = source;
   options.target = target;
@@ -334,10 +335,12 @@ py::dict sweep_shape_binding(const std::string& brep_text_or_path, double size, 
     n(i, 1) = mesh.nodes[i].y;
     n(i, 2) = mesh.nodes[i].z;
   }
-  py::array_t<std::int32_t> hexes({static_cast<py::ssize_t>(mesh.hexes.size()), py::ssize_t{8}});
+  const int per = mesh.nodes_per_element();
+  py::array_t<std::int32_t> hexes({static_cast<py::ssize_t>(mesh.hexes.size()), py::ssize_t{per}});
   auto h = hexes.mutable_unchecked<2>();
   for (py::ssize_t i = 0; i < h.shape(0); ++i) {
-    for (int k = 0; k < 8; ++k) h(i, k) = mesh.hexes[static_cast<std::size_t>(i)][k];
+    const std::vector<NodeId> ids = mesh.element_nodes(static_cast<std::size_t>(i));
+    for (int k = 0; k < per; ++k) h(i, k) = ids[k];
   }
   py::list solids, refused;
   for (const SweptSolid& s : mesh.solids) {
@@ -381,6 +384,7 @@ py::dict sweep_shape_binding(const std::string& brep_text_or_path, double size, 
   out["nodes"] = nodes;
   out["hexes"] = hexes;
   out["scaled_jacobian"] = numpy_copy(mesh.scaled_jacobian);
+  out["jacobian_ratio"] = mesh.second_order() ? py::object(numpy_copy(mesh.jacobian_ratio)) : py::none();
   out["solids"] = solids;
   out["refused_solids"] = refused;
   out["face_nodes"] = face_nodes;
@@ -434,7 +438,7 @@ PYBIND11_MODULE(_core, m) {
   });
   m.def("sweep_shape", &tquad::sweep_shape_binding, py::arg("brep_text_or_path"), py::arg("size"),
         py::arg("min_size"), py::arg("layers"), py::arg("source"), py::arg("target"), py::arg("keep_going"),
-        py::arg("smooth"), py::arg("threads"), py::arg("read_timeout"));
+        py::arg("smooth"), py::arg("threads"), py::arg("read_timeout"), py::arg("order"));
   m.def("mesh_shape", &tquad::mesh_shape_binding, py::arg("brep_text_or_path"), py::arg("size"),
         py::arg("faces"), py::arg("corners"), py::arg("keep_going"), py::arg("allow_inverted"),
         py::arg("threads"), py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("smooth"),

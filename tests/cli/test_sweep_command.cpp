@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepTools.hxx>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -141,6 +143,57 @@ TEST_F(Sweep, CalculixStretchesASweptCylinderBySigmaLOverE) {
     EXPECT_NEAR(std::abs(std::stod(m[4])), expected, 1e-5 * expected) << text;  // the .dat's digits
   }
   EXPECT_EQ(count, static_cast<int>(tip.size()));
+}
+
+// The mean z displacement of the .dat's printed nodes.
+double mean_uz(const std::string& dat, int& count) {
+  const std::regex line(R"(^\s+(\d+)\s+(\S+)\s+(\S+)\s+(\S+)\s*$)");
+  std::istringstream in(dat);
+  double sum = 0;
+  count = 0;
+  for (std::string text; std::getline(in, text);) {
+    std::smatch m;
+    if (!std::regex_match(text, m, line)) continue;
+    sum += std::stod(m[4]);
+    ++count;
+  }
+  return count ? sum / count : NAN;
+}
+
+TEST_F(Sweep, CalculixBendsASweptCantileverOfTwentyNodeHexahedraAsTimoshenko) {
+  if (!program_on_path("ccx")) GTEST_SKIP() << "ccx (Debian calculix-ccx) is not on PATH";
+  // 100 x 10 x 10 steel, clamped at x = 0, 100 N down at x = 100 spread over the end
+  // face's nodes. Timoshenko: P L^3 / (3 E I) + P L / (k G A), k = 5 / 6.
+  constexpr double length = 100, side = 10, young = 210000, poisson = 0.3, force = 100;
+  BRepTools::Write(BRepPrimAPI_MakeBox(length, side, side).Shape(), path("beam.brep").c_str());
+  const RunResult r = run_tquad({"sweep", path("beam.brep"), "-o", path("beam.inp"), "--source", "0", "--target",
+                                 "1", "--size", "2.5", "--order", "2", "--report", "json"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["solids"][0]["layers"], 40);
+  std::string deck = read_text(path("beam.inp"));
+  EXPECT_NE(deck.find("*ELEMENT, TYPE=C3D20, ELSET=SOLID0"), std::string::npos);
+  const std::vector<long long> tip = inp_node_set(deck, "FACE1");
+  ASSERT_FALSE(tip.empty());
+  // C3D20R: CalculiX's usual choice for bending (reduced integration, no locking).
+  const auto at = deck.find("TYPE=C3D20,");
+  deck.replace(at, std::string("TYPE=C3D20,").size(), "TYPE=C3D20R,");
+  deck += "*NSET, NSET=TIP\n";
+  for (long long n : tip) deck += std::to_string(n) + "\n";
+  deck += "*MATERIAL, NAME=STEEL\n*ELASTIC\n210000, 0.3\n*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL\n"
+          "*BOUNDARY\nFACE0, 1, 3\n*STEP\n*STATIC\n*CLOAD\nTIP, 3, " +
+          std::to_string(-force / static_cast<double>(tip.size())) + "\n*NODE PRINT, NSET=TIP\nU\n*END STEP\n";
+  write_text(path("beam.inp"), deck);
+  const RunResult ccx = run_program("env", {"OMP_NUM_THREADS=1", "ccx", "-i", "beam"}, dir_.string());
+  ASSERT_EQ(ccx.exit_status, 0) << ccx.out << ccx.err;
+  EXPECT_EQ(ccx.out.find("*ERROR"), std::string::npos) << ccx.out;
+  int count = 0;
+  const double deflection = -mean_uz(read_text(path("beam.dat")), count);
+  EXPECT_EQ(count, static_cast<int>(tip.size()));
+  const double inertia = side * side * side * side / 12, area = side * side;
+  const double shear = young / (2 * (1 + poisson));
+  const double expected = force * length * length * length / (3 * young * inertia) +
+                          force * length / (5.0 / 6.0 * shear * area);
+  EXPECT_NEAR(deflection, expected, 0.02 * expected);
 }
 
 }  // namespace

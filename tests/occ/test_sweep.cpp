@@ -287,6 +287,48 @@ TEST(Sweep, PartialRevolutionsAreSweptByTheExactRotation) {
   }
 }
 
+TEST(Sweep, SecondOrderPutsEdgeMiddlesOnTheGeometryAndThePaths) {
+  const TopoDS_Shape ring = revolved(M_PI / 2);
+  SweepOptions options;
+  options.face.size = 2.0;
+  options.face.order = 2;
+  const SweepResult r = sweep_shape(ring, options);
+  ASSERT_TRUE(r.mesh.second_order());
+  ASSERT_EQ(r.mesh.mid_nodes.size(), r.mesh.hexes.size());
+  const SweptSolid& s = r.mesh.solids[0];
+  const double half_step = M_PI / 2 / s.layers / 2;
+  for (std::size_t k = 0; k < r.mesh.hexes.size(); ++k) {
+    ASSERT_GT(r.mesh.jacobian_ratio[k], 0.0) << "hexahedron " << k;
+    for (int i = 0; i < 4; ++i) {
+      // The middle of the edge from corner i to corner i + 4: on the corner's arc,
+      // half a layer on.
+      const Vec3 a = r.mesh.nodes[r.mesh.hexes[k][i]], m = r.mesh.nodes[r.mesh.mid_nodes[k][8 + i]];
+      ASSERT_NEAR(std::hypot(a.x, a.y), std::hypot(m.x, m.y), 1e-9);
+      ASSERT_NEAR(a.z, m.z, 1e-9);
+      ASSERT_NEAR(std::abs(std::remainder(std::atan2(m.y, m.x) - std::atan2(a.y, a.x), 2 * M_PI)), half_step, 1e-9);
+      // A layer's edge middle is the source's (on its face's curve or surface), turned.
+      const Vec3 b = r.mesh.nodes[r.mesh.hexes[k][(i + 1) % 4]], mb = r.mesh.nodes[r.mesh.mid_nodes[k][i]];
+      ASSERT_LT(distance(mb, 0.5 * (a + b)), 0.5 * distance(a, b));
+    }
+  }
+  // Each side face's node set holds its edge middles too: the hole's wall (a piece of
+  // torus, the one face neither plane nor cylinder) has every node at distance 2 from
+  // the hole's centre circle.
+  const ShapeIndex index(ring);
+  int tori = 0;
+  for (const auto& [face, nodes] : r.mesh.face_nodes) {
+    const GeomAbs_SurfaceType type = BRepAdaptor_Surface(index.face(face)).GetType();
+    if (type == GeomAbs_Plane || type == GeomAbs_Cylinder) continue;
+    ++tori;
+    EXPECT_GT(nodes.size(), 3u * (s.layers + 1));
+    for (NodeId n : nodes) {
+      const Vec3 p = r.mesh.nodes[n];
+      ASSERT_NEAR(std::hypot(std::hypot(p.x, p.y) - 15.0, p.z - 5.0), 2.0, 1e-6) << "node " << n;
+    }
+  }
+  EXPECT_EQ(tori, 1);
+}
+
 TEST(Sweep, RevolutionsThatTouchTheirAxisOrCloseAreRefused) {
   SweepOptions options;
   options.face.size = 2.0;

@@ -31,6 +31,53 @@ double hex_scaled_jacobian(const std::array<Vec3, 8>& p) {
   return worst;
 }
 
+double hex20_jacobian_ratio(const std::array<Vec3, 20>& p) {
+  // Natural coordinates of the nodes: corners, then edge middles (one coordinate 0).
+  static constexpr double kNode[20][3] = {
+      {-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1},
+      {0, -1, -1},  {1, 0, -1},  {0, 1, -1}, {-1, 0, -1}, {0, -1, 1},  {1, 0, 1},  {0, 1, 1}, {-1, 0, 1},
+      {-1, -1, 0},  {1, -1, 0},  {1, 1, 0},  {-1, 1, 0}};
+  const double g = std::sqrt(0.6);
+  const double points[3] = {-g, 0.0, g};
+  double lowest = INFINITY, highest = -INFINITY;
+  for (double x : points) {
+    for (double y : points) {
+      for (double z : points) {
+        Vec3 dx, dy, dz;  // the columns of the Jacobian: d position / d (x, y, z)
+        for (int i = 0; i < 20; ++i) {
+          const double xi = kNode[i][0], yi = kNode[i][1], zi = kNode[i][2];
+          double nx, ny, nz;
+          if (i < 8) {
+            const double a = 1 + x * xi, b = 1 + y * yi, c = 1 + z * zi, s = x * xi + y * yi + z * zi - 2;
+            nx = xi * b * c * (s + a) / 8;
+            ny = yi * a * c * (s + b) / 8;
+            nz = zi * a * b * (s + c) / 8;
+          } else if (xi == 0) {
+            nx = -x * (1 + y * yi) * (1 + z * zi) / 2;
+            ny = (1 - x * x) * yi * (1 + z * zi) / 4;
+            nz = (1 - x * x) * (1 + y * yi) * zi / 4;
+          } else if (yi == 0) {
+            nx = (1 - y * y) * xi * (1 + z * zi) / 4;
+            ny = -y * (1 + x * xi) * (1 + z * zi) / 2;
+            nz = (1 - y * y) * (1 + x * xi) * zi / 4;
+          } else {
+            nx = (1 - z * z) * xi * (1 + y * yi) / 4;
+            ny = (1 - z * z) * (1 + x * xi) * yi / 4;
+            nz = -z * (1 + x * xi) * (1 + y * yi) / 2;
+          }
+          dx = dx + nx * p[i];
+          dy = dy + ny * p[i];
+          dz = dz + nz * p[i];
+        }
+        const double det = dot(cross(dx, dy), dz);
+        lowest = std::min(lowest, det);
+        highest = std::max(highest, det);
+      }
+    }
+  }
+  return highest > 0 ? lowest / highest : -1.0;
+}
+
 double hex_volume(const std::array<Vec3, 8>& p) {
   // Six tetrahedra around the diagonal 0-6.
   return tetra_volume(p[0], p[1], p[2], p[6]) + tetra_volume(p[0], p[2], p[3], p[6]) +

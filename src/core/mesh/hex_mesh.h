@@ -45,12 +45,33 @@ struct HexMesh {
   // caps' and the sides' (a side's are its source edge's nodes in every layer).
   std::vector<std::pair<int, std::vector<NodeId>>> face_nodes;
   std::vector<double> scaled_jacobian;  // per hex (hex_scaled_jacobian)
+  // Second order (or empty): per hexahedron, the node in the middle of each edge, in
+  // VTK's (type 25) and CalculiX's (C3D20) order: edges 0-1, 1-2, 2-3, 3-0, 4-5, 5-6,
+  // 6-7, 7-4, 0-4, 1-5, 2-6, 3-7; the nodes themselves are in `nodes`.
+  std::vector<std::array<NodeId, 12>> mid_nodes;
+  // Second order: per hexahedron, the smallest Jacobian determinant at its 27
+  // integration points over the largest (hex20_jacobian_ratio).
+  std::vector<double> jacobian_ratio;
+
+  bool second_order() const { return !mid_nodes.empty(); }
+  int nodes_per_element() const { return second_order() ? 20 : 8; }
+  // Hexahedron k's nodes: its 8 corners, then (second order) its 12 edge middles.
+  std::vector<NodeId> element_nodes(std::size_t k) const {
+    std::vector<NodeId> ids(hexes[k].begin(), hexes[k].end());
+    if (second_order()) ids.insert(ids.end(), mid_nodes[k].begin(), mid_nodes[k].end());
+    return ids;
+  }
 };
 
 // The worst of the eight corners' scaled Jacobians: the determinant of the three
 // unit edge vectors leaving each corner (Knupp's hexahedron metric); 1 for a cube,
 // at or below 0 for an inverted or degenerate corner.
 double hex_scaled_jacobian(const std::array<Vec3, 8>& p);
+
+// The 20-node (serendipity) hexahedron's Jacobian determinant at its 3 x 3 x 3 Gauss
+// points: the smallest over the largest. Above 0 when the element is valid everywhere
+// it is integrated, whatever its corners' Jacobians say; 1 for an undistorted one.
+double hex20_jacobian_ratio(const std::array<Vec3, 20>& p);
 
 // The hexahedron's volume (six tetrahedra from node 0's diagonal), for tests and
 // checks; exact for hexahedra whose faces are planar.

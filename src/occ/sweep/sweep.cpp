@@ -282,6 +282,43 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
     }
   }
   const auto at = [&](NodeId n, int k) { return static_cast<NodeId>(offset + k * count + compact.at(n)); };
+  // Second order: the source's edge middles (on its surface and curves) moved to every
+  // layer, and a middle on each node's path between layers (on the side surface: the
+  // path is the motion's own).
+  const bool second = source.mesh.second_order();
+  std::map<std::pair<NodeId, NodeId>, NodeId> middle_of;  // source corner pair -> source middle
+  std::map<NodeId, NodeId> compact_middle;
+  std::vector<Vec3> base_middles;
+  if (second) {
+    for (std::size_t k = 0; k < source.mesh.quads.size(); ++k) {
+      const Quad& q = source.mesh.quads[k];
+      for (int i = 0; i < 4; ++i) {
+        const NodeId m = source.mesh.mid_nodes[k][i];
+        middle_of[std::minmax(q[i], q[(i + 1) % 4])] = m;
+        if (compact_middle.emplace(m, static_cast<NodeId>(base_middles.size())).second) {
+          base_middles.push_back(source.mesh.nodes[m]);
+        }
+      }
+    }
+  }
+  const long long middles = static_cast<long long>(base_middles.size());
+  if (count * (layers + 1) + (middles * (layers + 1) + count * layers) > static_cast<long long>(INT32_MAX) - offset) {
+    throw InputError("solid " + std::to_string(solid) + ": the sweep would have over 2^31 nodes; use fewer layers or a larger size");
+  }
+  const NodeId plane_offset = static_cast<NodeId>(out.nodes.size());
+  for (int k = 0; k <= layers && second; ++k) {
+    for (const Vec3& p : base_middles) {
+      out.nodes.push_back(k == 0 ? p : to_vec3(motion.at(gp_Pnt(p.x, p.y, p.z), static_cast<double>(k) / layers)));
+    }
+  }
+  const NodeId path_offset = static_cast<NodeId>(out.nodes.size());
+  for (int k = 0; k < layers && second; ++k) {
+    for (const Vec3& p : base) out.nodes.push_back(to_vec3(motion.at(gp_Pnt(p.x, p.y, p.z), (k + 0.5) / layers)));
+  }
+  const auto plane_middle = [&](NodeId a, NodeId b, int k) {
+    return static_cast<NodeId>(plane_offset + k * middles + compact_middle.at(middle_of.at(std::minmax(a, b))));
+  };
+  const auto path_middle = [&](NodeId n, int k) { return static_cast<NodeId>(path_offset + k * count + compact.at(n)); };
   SweptSolid record;
   record.solid = solid;
   record.source = caps.source;
@@ -313,6 +350,20 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
       if (!(sj > 1e-6)) ++bad;
       out.hexes.push_back(h);
       out.scaled_jacobian.push_back(sj);
+      if (!second) continue;
+      std::array<NodeId, 12> m;
+      for (int i = 0; i < 4; ++i) {
+        m[i] = plane_middle(bottom[i], bottom[(i + 1) % 4], k);
+        m[i + 4] = plane_middle(bottom[i], bottom[(i + 1) % 4], k + 1);
+        m[i + 8] = path_middle(bottom[i], k);
+      }
+      std::array<Vec3, 20> all;
+      for (int i = 0; i < 8; ++i) all[i] = p[i];
+      for (int i = 0; i < 12; ++i) all[i + 8] = out.nodes[m[i]];
+      const double ratio = hex20_jacobian_ratio(all);
+      if (!(ratio > 1e-6)) ++bad;
+      out.mid_nodes.push_back(m);
+      out.jacobian_ratio.push_back(ratio);
     }
   }
   if (bad > 0) {
@@ -327,6 +378,10 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
     source_nodes.push_back(offset + i);
     target_nodes.push_back(static_cast<NodeId>(offset + layers * count + i));
   }
+  for (NodeId i = 0; i < middles && second; ++i) {
+    source_nodes.push_back(plane_offset + i);
+    target_nodes.push_back(static_cast<NodeId>(plane_offset + layers * middles + i));
+  }
   out.face_nodes.emplace_back(caps.source, source_nodes);
   out.face_nodes.emplace_back(caps.target, target_nodes);
   const std::set<int> source_edges = edges_of(index, caps.source);
@@ -340,6 +395,12 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
         const Vec3& p = source.mesh.nodes[original];
         if (point_to_edge(gp_Pnt(p.x, p.y, p.z), edge) > tol) continue;
         for (int k = 0; k <= layers; ++k) nodes.push_back(static_cast<NodeId>(offset + k * count + i));
+        for (int k = 0; k < layers && second; ++k) nodes.push_back(static_cast<NodeId>(path_offset + k * count + i));
+      }
+      for (const auto& [original, i] : compact_middle) {
+        const Vec3& p = source.mesh.nodes[original];
+        if (point_to_edge(gp_Pnt(p.x, p.y, p.z), edge) > tol) continue;
+        for (int k = 0; k <= layers; ++k) nodes.push_back(static_cast<NodeId>(plane_offset + k * middles + i));
       }
     }
     std::sort(nodes.begin(), nodes.end());
@@ -408,6 +469,8 @@ SweepResult sweep_shape(const TopoDS_Shape& shape, const SweepOptions& options) 
         result.mesh.nodes.resize(nodes);
         result.mesh.hexes.resize(hexes);
         result.mesh.scaled_jacobian.resize(hexes);
+        if (result.mesh.mid_nodes.size() > hexes) result.mesh.mid_nodes.resize(hexes);
+        if (result.mesh.jacobian_ratio.size() > hexes) result.mesh.jacobian_ratio.resize(hexes);
         result.mesh.face_nodes.resize(sets);
         result.mesh.solids.resize(swept);
       }

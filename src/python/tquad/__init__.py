@@ -260,7 +260,10 @@ class SweptMesh:
     Attributes:
         nodes: N x 3 float64.
         hexes: M x 8 int32, 0-based, in VTK's hexahedron and CalculiX's C3D8 order (the
-            bottom face 0-3, node i + 4 above node i).
+            bottom face 0-3, node i + 4 above node i); at order 2 M x 20, the 12 edge
+            middles after the corners (VTK's type 25, C3D20).
+        jacobian_ratio: at order 2, each hexahedron's smallest Jacobian determinant at
+            its 27 integration points over the largest; None at order 1.
         scaled_jacobian: M float64, each hexahedron's worst corner (1: a cube).
         solids: per swept solid, ``solid``, ``source`` and ``target`` (face indices),
             ``layers``, ``height`` (the longest path), ``first_hex``, ``hex_count``, and
@@ -276,6 +279,7 @@ class SweptMesh:
         self.nodes = data["nodes"]
         self.hexes = data["hexes"]
         self.scaled_jacobian = data["scaled_jacobian"]
+        self.jacobian_ratio = data["jacobian_ratio"]
         self.solids = list(data["solids"])
         self.refused_solids = list(data["refused_solids"])
         self.face_nodes = dict(data["face_nodes"])
@@ -289,7 +293,8 @@ class SweptMesh:
 
 def sweep_shape(brep_text_or_path: str, *, size: float = 0.0, min_size: float = 0.0, layers: int = 0,
                 source: Optional[int] = None, target: Optional[int] = None, keep_going: bool = False,
-                smooth: bool = True, threads: int = 0, read_timeout: Optional[float] = None) -> SweptMesh:
+                smooth: bool = True, threads: int = 0, read_timeout: Optional[float] = None,
+                order: int = 1) -> SweptMesh:
     """Sweep the solids of a CAD shape into hexahedra (as ``tquad sweep``).
 
     A solid is swept when it is an extrusion or a partial revolution: two planar caps
@@ -306,6 +311,8 @@ def sweep_shape(brep_text_or_path: str, *, size: float = 0.0, min_size: float = 
             them per solid.
         keep_going: sweep the other solids when one is refused (listed in
             ``refused_solids``); otherwise a refused solid raises ValueError.
+        order: 1 for eight-node hexahedra; 2 for twenty-node ones (``hexes`` M x 20,
+            the edge middles on the CAD curves and surfaces or on their node's path).
 
     Raises:
         ValueError: unreadable shape, no solid, a solid that is not sweepable (without
@@ -317,4 +324,5 @@ def sweep_shape(brep_text_or_path: str, *, size: float = 0.0, min_size: float = 
         str(brep_text_or_path), float(size), float(min_size), _integer(layers, "layers", 0, 1_000_000),
         -1 if source is None else _integer(source, "source", 0),
         -1 if target is None else _integer(target, "target", 0), bool(keep_going), bool(smooth),
-        _integer(threads, "threads", 0, 1024), 0.0 if read_timeout is None else float(read_timeout)))
+        _integer(threads, "threads", 0, 1024), 0.0 if read_timeout is None else float(read_timeout),
+        _integer(order, "order", 1, 2)))

@@ -55,6 +55,7 @@ class SweptMesh:
     nodes: np.ndarray
     hexes: np.ndarray
     scaled_jacobian: np.ndarray
+    jacobian_ratio: Optional[np.ndarray]
     solids: List[dict]
     refused_solids: List[dict]
     face_nodes: Dict[int, np.ndarray]
@@ -64,4 +65,5 @@ class SweptMesh:
 
 def sweep_shape(brep_text_or_path: str, *, size: float = ..., min_size: float = ..., layers: int = ...,
                 source: Optional[int] = ..., target: Optional[int] = ..., keep_going: bool = ...,
-                smooth: bool = ..., threads: int = ..., read_timeout: Optional[float] = ...) -> SweptMesh: ...
+                smooth: bool = ..., threads: int = ..., read_timeout: Optional[float] = ...,
+                order: int = ...) -> SweptMesh: ...
