@@ -5,7 +5,8 @@
 #
 # 1. install.sh installs the add-on (with the tquad module) into a temporary
 #    FREECAD_USER_HOME, so the tests see it exactly as a user's FreeCAD would;
-# 2. test_headless.py and test_fem_plate.py run in freecadcmd, one process each;
+# 2. test_headless.py, test_fem_plate.py, test_fem_solid.py and test_u_channel.py run in
+#    freecadcmd, one process each;
 # 3. test_gui.py runs in the FreeCAD GUI under Xvfb (when freecad and xvfb-run exist)
 #    and saves a screenshot to $TQ_SCREENSHOT (default <repo>/docs/freecad_screenshot.png).
 # The last line is the summary "N passed, M failed" (plus skips). Without freecadcmd
@@ -53,7 +54,7 @@ tally() {
 
 common_env=(FREECAD_USER_HOME="$home" TQ_TEST_DIR="$here" TQ_CLI="${TQ_CLI:-$repo/build/bin/tquad}")
 
-for test_module in test_headless test_fem_plate test_u_channel; do
+for test_module in test_headless test_fem_plate test_fem_solid test_u_channel; do
   echo "=== $test_module (freecadcmd) ==="
   result="$home/$test_module.json"
   env "${common_env[@]}" TQ_TEST_MODULES="$test_module" TQ_RESULT_FILE="$result" \

@@ -12,14 +12,15 @@ from typing import Iterable, Optional
 
 import FreeCAD
 
-from .mesh_object import ELEMENT_ORDERS, TemplateQuadMesh
+from .mesh_object import ELEMENT_DIMENSIONS, ELEMENT_ORDERS, TemplateQuadMesh
 
 
 def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]] = None,
               t4_ratio: int = 2, keep_going: bool = False, name: str = "TemplateQuadMesh",
               faces: Optional[Iterable[str]] = None, raise_on_error: bool = True,
               min_size: float = 0.0, smooth: bool = True, best_corners: bool = False,
-              accept_incomplete: bool = False, element_order: str = "1st", sew: bool = False):
+              accept_incomplete: bool = False, element_order: str = "1st", sew: bool = False,
+              element_dimension: str = "2D", layers: int = 0):
     """make_mesh(): add a TemplateQuad mesh of part_obj to doc, mesh it, return it.
 
     Args:
@@ -42,6 +43,10 @@ def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]]
             AcceptIncomplete properties.
         element_order: "1st" (4-node quads) or "2nd" (8-node quads), ElementOrder.
         sew: the Sew property: join faces that touch without sharing their edge.
+        element_dimension: "2D" (quads on the faces) or "3D" (hexahedra swept through
+            the solids that are extrusions or partial revolutions), ElementDimension.
+        layers: 3D: hexahedra from each solid's source face to its target (0: from
+            the size), Layers.
 
     Returns:
         The mesh object; None when the user cancelled the meshing in the GUI's
@@ -58,6 +63,14 @@ def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]]
         message = bad[0]
         FreeCAD.Console.PrintError(f"TemplateQuad: {part_obj.Label}: {message}\n")
         raise ValueError(message)
+    if element_dimension not in ELEMENT_DIMENSIONS:
+        message = f"element_dimension must be one of {', '.join(ELEMENT_DIMENSIONS)}, not {element_dimension!r}"
+        FreeCAD.Console.PrintError(f"TemplateQuad: {part_obj.Label}: {message}\n")
+        raise ValueError(message)
+    if not (isinstance(layers, int) and layers >= 0):
+        message = f"layers must be a whole number of 0 or more, not {layers!r}"
+        FreeCAD.Console.PrintError(f"TemplateQuad: {part_obj.Label}: {message}\n")
+        raise ValueError(message)
     if element_order not in ELEMENT_ORDERS:
         message = f"element_order must be one of {', '.join(ELEMENT_ORDERS)}, not {element_order!r}"
         FreeCAD.Console.PrintError(f"TemplateQuad: {part_obj.Label}: {message}\n")
@@ -65,6 +78,8 @@ def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]]
     obj = doc.addObject("Fem::FemMeshObjectPython", name)
     TemplateQuadMesh(obj)
     obj.ElementOrder = element_order
+    obj.ElementDimension = element_dimension
+    obj.Layers = layers
     obj.Part = part_obj
     obj.CharacteristicLengthMax = float(size)
     obj.CharacteristicLengthMin = float(min_size)

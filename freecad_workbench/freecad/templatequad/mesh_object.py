@@ -24,6 +24,9 @@ Gmsh mesh object, where they mean the same):
     Corners                  "FACE:V1,V2,..." entries overriding the automatic corners
     Sew                      join faces that touch without sharing their edge first
     KeepGoing                mesh the other faces when one is refused
+    ElementDimension         "2D" (quads on the faces) or "3D" (hexahedra swept through
+                             the solids that are extrusions or partial revolutions)
+    Layers                   3D: hexahedra from source to target (0 = from the size)
     AcceptIncomplete         let the CalculiX solver run on a mesh with refused faces
     T4Ratio                  (advanced) the k of the T4 template test
 Outputs (read-only, group "TemplateQuad results"):
@@ -78,12 +81,20 @@ _INPUTS = (
      "there); off, the solver's check stops with the refused faces' names"),
     ("App::PropertyInteger", "T4Ratio",
      "Advanced: the k of the T4 template test k*C <= A and k*C <= B (at least 2)"),
+    ("App::PropertyEnumeration", "ElementDimension",
+     "2D: quadrilateral shells on the part's faces; 3D: hexahedra, each solid that is an "
+     "extrusion or a partial revolution swept from a face (C3D8, or C3D20 at 2nd order)"),
+    ("App::PropertyInteger", "Layers",
+     "3D: hexahedra through each solid from its source face to its target (0 = from the "
+     "element size)"),
 )
+#: The dimensions ElementDimension offers (FreeCAD's Gmsh object has the same names).
+ELEMENT_DIMENSIONS = ["2D", "3D"]
 #: The orders ElementOrder offers (FreeCAD's Gmsh object spells them the same way).
 ELEMENT_ORDERS = ["1st", "2nd"]
 # Values of new properties, for new objects and for files saved before they existed
 # (so those files mesh as they did).
-_DEFAULTS = {"T4Ratio": 2, "Smooth": True, "BestCorners": False, "Sew": False}
+_DEFAULTS = {"T4Ratio": 2, "Smooth": True, "BestCorners": False, "Sew": False, "Layers": 0}
 ELEMENT_QUALITY = "ElementQuality"
 _OUTPUTS = (
     ("App::PropertyString", "Quality", "Element count and quality, one line"),
@@ -115,6 +126,14 @@ def _migrate_size(obj) -> None:
     if "Size" in obj.PropertiesList and "CharacteristicLengthMax" in obj.PropertiesList:
         obj.CharacteristicLengthMax = obj.Size
         obj.removeProperty("Size")
+
+
+def _offer_every_dimension(obj) -> None:
+    """Keep ElementDimension's choices those of this version, keeping the value."""
+    if list(obj.getEnumerationsOfProperty("ElementDimension")) != ELEMENT_DIMENSIONS:
+        value = obj.ElementDimension
+        obj.ElementDimension = ELEMENT_DIMENSIONS
+        obj.ElementDimension = value if value in ELEMENT_DIMENSIONS else ELEMENT_DIMENSIONS[0]
 
 
 def _offer_every_order(obj) -> None:
@@ -156,6 +175,8 @@ OPTION_PROPERTIES = {
 #: Input properties of the object that are not options of tquad.mesh_shape, and why.
 FREECAD_ONLY_PROPERTIES = {
     "Part": "what is meshed: its Shape goes to tquad as BREP text",
+    "ElementDimension": "2D meshes the faces (tquad.mesh_shape), 3D sweeps the solids (tquad.sweep_shape)",
+    "Layers": "tquad.sweep_shape's layers",
     "KeepGoing": "whether refused faces fail the recompute or leave an Incomplete mesh",
     "AcceptIncomplete": "whether a solver may run on an Incomplete mesh",
 }
@@ -185,10 +206,13 @@ def add_properties(obj) -> None:
             obj.addProperty(prop_type, name, GROUP, doc)
             if name == "ElementOrder":
                 obj.ElementOrder = ELEMENT_ORDERS
+            if name == "ElementDimension":
+                obj.ElementDimension = ELEMENT_DIMENSIONS
             if name in _DEFAULTS:
                 setattr(obj, name, _DEFAULTS[name])
     _migrate_size(obj)
     _offer_every_order(obj)
+    _offer_every_dimension(obj)
     for prop_type, name, doc in _OUTPUTS:
         if not hasattr(obj, name):
             obj.addProperty(prop_type, name, RESULT_GROUP, doc, _OUTPUT)
@@ -247,6 +271,9 @@ class TemplateQuadMesh(StatelessProxy):
         self.mesh_requested = False  # one mesh per request, whatever recomputes follow
         self.last_error = ""
         self.cancelled = False
+        if getattr(obj, "ElementDimension", "2D") == "3D":
+            self._sweep(obj)
+            return
         try:
             mesh = self._mesh(obj)
             if mesh is None:  # the user cancelled: the mesh and its inputs stay as they were
@@ -291,6 +318,48 @@ class TemplateQuadMesh(StatelessProxy):
         absorbed = meshing.absorbed_message(mesh)
         if absorbed:
             FreeCAD.Console.PrintMessage(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {absorbed}\n")
+
+    def _sweep(self, obj):
+        """ElementDimension 3D: the part's solids swept into hexahedra -> obj.FemMesh.
+
+        Solids tquad cannot sweep are listed in RefusedFaces ("Solid2: ...") and make
+        the mesh Incomplete; without KeepGoing they fail the recompute. Errors as
+        execute's."""
+        try:
+            shape = self._source_shape(obj)
+            swept = meshing.sweep_shape(shape, size=obj.CharacteristicLengthMax.Value,
+                                        min_size=obj.CharacteristicLengthMin.Value, layers=obj.Layers,
+                                        smooth=obj.Smooth, order=2 if obj.ElementOrder == "2nd" else 1)
+            if swept.refused_solids and not obj.KeepGoing:
+                raise ValueError("%d solid(s) not swept: %s. Turn on 'Mesh the other faces' (KeepGoing) "
+                                 "to sweep the rest." % (len(swept.refused_solids),
+                                                         "; ".join(meshing.refused_solid_lines(swept))))
+        except (meshing.TquadMissing, ValueError) as error:
+            self.last_error = meshing.explain_tquad_error(str(error).strip())
+            self._clear(obj)
+            self.meshed_inputs = None
+            FreeCAD.Console.PrintError(f"TemplateQuad: {obj.Label}: {self.last_error}\n")
+            raise
+        obj.FemMesh = meshing.to_femmesh_volumes(swept)
+        obj.TemplateTrees = ["Solid%d: face %d to face %d, %d layers, %d hexahedra" % (
+            s["solid"] + 1, s["source"] + 1, s["target"] + 1, s["layers"], s["hex_count"]) for s in swept.solids]
+        obj.RefusedFaces = meshing.refused_solid_lines(swept)
+        obj.RefusedFaceNames = []
+        obj.Incomplete = bool(swept.refused_solids)
+        obj.OutOfDate = False
+        obj.UnsewnEdges = 0
+        obj.Quality = meshing.swept_summary(swept)
+        sj = swept.scaled_jacobian
+        obj.ScaledJacobianMin = float(sj.min())
+        obj.ScaledJacobianMean = float(sj.mean())
+        import numpy
+        bands, _ = numpy.histogram(numpy.clip(sj[sj >= 0], 0, 1), bins=numpy.linspace(0, 1, 11))
+        obj.QualityHistogram = [int((sj < 0).sum())] + [int(n) for n in bands]
+        obj.ElementSizeUsed = float(swept.edge_size)
+        obj.ElementQuality = sj.tolist()
+        self._remember_meshed_inputs(obj)
+        for line in obj.RefusedFaces:
+            FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {obj.Part.Label} {line} (not swept)\n")
 
     def _mark_out_of_date(self, obj):
         """A recompute nobody asked to mesh: the part or a setting changed. The mesh

@@ -162,10 +162,11 @@ def to_femmesh(mesh):
     return femmesh if femmesh is not None else femmesh_node_by_node(mesh)
 
 
-def write_legacy_vtk(path: str, nodes, elements) -> None:
+def write_legacy_vtk(path: str, nodes, elements, hexahedra: bool = False) -> None:
     """write_legacy_vtk(): nodes (n x 3 floats) and elements (element_nodes: m x 4
-    quads or m x 8 quadratic quads, 0-based) as a binary legacy VTK unstructured grid
-    (big-endian, as that format asks; cell type 9 = quad, 23 = quadratic quad)."""
+    quads or m x 8 quadratic quads, 0-based; with hexahedra, m x 8 or m x 20) as a
+    binary legacy VTK unstructured grid (big-endian, as that format asks; cell type
+    9 = quad, 23 = quadratic quad, 12 = hexahedron, 25 = quadratic hexahedron)."""
     import numpy
 
     nodes = numpy.asarray(nodes, dtype=float).reshape(-1, 3)
@@ -180,7 +181,8 @@ def write_legacy_vtk(path: str, nodes, elements) -> None:
         out.write(b"\nCELLS %d %d\n" % (len(elements), (per + 1) * len(elements)))
         out.write(cells.tobytes())
         out.write(b"\nCELL_TYPES %d\n" % len(elements))
-        out.write(numpy.full(len(elements), 23 if per == 8 else 9, dtype=">i4").tobytes())
+        cell_type = {4: 9, 8: 23, 20: 25}[per] if per != 8 or not hexahedra else 12
+        out.write(numpy.full(len(elements), cell_type, dtype=">i4").tobytes())
         out.write(b"\n")
 
 
@@ -229,6 +231,61 @@ def femmesh_node_by_node(mesh):
     for quad_id, quad in enumerate((element_nodes(mesh) + 1).tolist(), start=1):
         add_face(quad, quad_id)
     return femmesh
+
+
+#: The swept hexahedra's node order as FreeCAD's FemMesh (SMESH) takes them, from
+#: tquad's (VTK's and CalculiX's): SMESH's bottom face runs the other way round, so
+#: FreeCAD's CalculiX writer, which reorders SMESH's hexahedra, gives positive C3D8
+#: and C3D20 (tests/freecad/test_headless.py checks the written order).
+SMESH_HEXA8 = (0, 3, 2, 1, 4, 7, 6, 5)
+SMESH_HEXA20 = SMESH_HEXA8 + (11, 10, 9, 8, 15, 14, 13, 12, 16, 19, 18, 17)
+
+
+def sweep_shape(shape, size: float = 0.0, min_size: float = 0.0, layers: int = 0,
+                smooth: bool = True, order: int = 1):
+    """sweep_shape(): the solids of a Part.Shape swept into hexahedra by tquad
+    (tquad.sweep_shape, keep_going on: refused solids come back as records)."""
+    tquad = load_tquad()
+    return tquad.sweep_shape(shape.exportBrepToString(), size=float(size), min_size=float(min_size),
+                             layers=int(layers), keep_going=True, smooth=bool(smooth), order=int(order))
+
+
+def to_femmesh_volumes(swept):
+    """to_femmesh_volumes(): a Fem.FemMesh of the swept hexahedra (ids from 1), through
+    a temporary legacy VTK file as to_femmesh does, in SMESH's node order."""
+    import tempfile
+
+    import numpy
+
+    import Fem
+
+    hexes = numpy.asarray(swept.hexes)
+    order = SMESH_HEXA20 if hexes.shape[1] == 20 else SMESH_HEXA8
+    elements = hexes[:, list(order)]
+    femmesh = Fem.FemMesh()
+    with tempfile.TemporaryDirectory(prefix="templatequad-") as folder:
+        path = os.path.join(folder, "mesh.vtk")
+        write_legacy_vtk(path, swept.nodes, elements, hexahedra=True)
+        femmesh.read(path)
+    if femmesh.NodeCount != len(swept.nodes) or femmesh.VolumeCount != len(hexes):
+        raise RuntimeError("FreeCAD read back %d nodes and %d volumes of %d and %d" % (
+            femmesh.NodeCount, femmesh.VolumeCount, len(swept.nodes), len(hexes)))
+    return femmesh
+
+
+def swept_summary(swept) -> str:
+    """swept_summary(): one line: hexahedra, nodes, solids and the scaled Jacobian."""
+    sj = swept.scaled_jacobian
+    line = (f"{len(swept.hexes)} hexahedra, {len(swept.nodes)} nodes; {len(swept.solids)} solid(s) swept; "
+            f"scaled Jacobian min {float(sj.min()):.3f} avg {float(sj.mean()):.3f}")
+    return line + (f"; {len(swept.refused_solids)} solid(s) not swept" if swept.refused_solids else "")
+
+
+def refused_solid_lines(swept) -> List[str]:
+    """refused_solid_lines(): "SolidN: <why>" per solid tquad did not sweep (FreeCAD's
+    1-based names; the faces in the reason become FaceN too)."""
+    return ["Solid%d: %s" % (r["solid"] + 1, freecad_wording(r["reason"].split(": ", 1)[-1]))
+            for r in swept.refused_solids]
 
 
 def quality_summary(mesh) -> str:

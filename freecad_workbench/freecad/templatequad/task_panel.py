@@ -18,14 +18,14 @@ import FreeCADGui
 from PySide import QtCore, QtGui  # FreeCAD's shim: QtGui also holds the widgets
 
 from . import meshing, paths
-from .mesh_object import ELEMENT_ORDERS
+from .mesh_object import ELEMENT_DIMENSIONS, ELEMENT_ORDERS
 from .quality_colours import histogram_band_colour
 from .view_provider import show_quality, showing_quality
 
 #: The properties the panel edits, in the order of _values().
 _INPUT_NAMES = ("CharacteristicLengthMax", "CharacteristicLengthMin", "ElementOrder",
                 "Smooth", "BestCorners", "Corners", "Sew", "KeepGoing", "AcceptIncomplete",
-                "T4Ratio")
+                "T4Ratio", "ElementDimension", "Layers")
 _CORNER_CHOICES = ("Automatic", "Best (slower)")
 
 
@@ -176,7 +176,7 @@ class TemplateQuadTaskPanel:
                 self.element_order.currentText(), self.smooth.isChecked(),
                 self.corner_choice.currentIndex() == 1, corners, self.sew.isChecked(),
                 self.keep_going.isChecked(), self.accept_incomplete.isChecked(),
-                self.t4_ratio.value())
+                self.t4_ratio.value(), self.dimension.currentText(), self.layers.value())
 
     def _store(self, values):
         """Set the properties whose values differ (an unchanged one stays untouched)."""
@@ -186,7 +186,7 @@ class TemplateQuadTaskPanel:
 
     def _load(self, values):
         (max_size, min_size, order, smooth, best, corners, sew, keep_going, accept,
-         t4_ratio) = values
+         t4_ratio, dimension, layers) = values
         self.max_size.setValue(max_size)
         self.min_size.setValue(min_size)
         self.element_order.setCurrentIndex(max(0, self.element_order.findText(order)))
@@ -197,6 +197,8 @@ class TemplateQuadTaskPanel:
         self.keep_going.setChecked(keep_going)
         self.accept_incomplete.setChecked(accept)
         self.t4_ratio.setValue(t4_ratio)
+        self.dimension.setCurrentIndex(max(0, self.dimension.findText(dimension)))
+        self.layers.setValue(layers)
 
     def _show_results(self):
         o = self.obj
@@ -277,6 +279,16 @@ class TemplateQuadTaskPanel:
         self.element_order.setToolTip("1st: 4-node quadrilaterals (S4 shells in CalculiX); "
                                       "2nd: 8-node quadrilaterals, edge middles on the part")
         grid.addRow("Order:", self.element_order)
+        self.dimension = QtGui.QComboBox()
+        self.dimension.addItems(ELEMENT_DIMENSIONS)
+        self.dimension.setToolTip("2D: quadrilateral shells on the faces; 3D: hexahedra swept "
+                                  "through each solid that is an extrusion or a partial revolution")
+        grid.addRow("Dimension:", self.dimension)
+        self.layers = QtGui.QSpinBox()
+        self.layers.setRange(0, 100000)
+        self.layers.setSpecialValueText("from the size")
+        self.layers.setToolTip("3D: hexahedra from each solid's source face to its target")
+        grid.addRow("Layers:", self.layers)
         self.smooth = QtGui.QCheckBox("Smooth")
         self.smooth.setToolTip("Move interior nodes on the surfaces to better-shaped quads")
         grid.addRow(self.smooth)
