@@ -90,8 +90,13 @@ int run(const SweepCommand& command, std::ostream& out, std::ostream& err) {
   out << "; element size " << fixed(result.size, 4) << "; scaled Jacobian min " << fixed(worst, 3) << ", mean "
       << fixed(mean, 3) << "\n";
   for (const SweptSolid& s : result.mesh.solids) {
-    out << "  solid " << s.solid << ": face " << s.source << " to face " << s.target << ", " << s.layers
-        << " layers, " << s.hex_count << " hexahedra\n";
+    out << "  solid " << s.solid << ": ";
+    if (s.source >= 0) {
+      out << "face " << s.source << " to face " << s.target;
+    } else {
+      out << "a full turn of its profile about its axis";
+    }
+    out << ", " << s.layers << " layers, " << s.hex_count << " hexahedra\n";
   }
   return 0;
 }

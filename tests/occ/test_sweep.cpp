@@ -113,7 +113,7 @@ void expect_conforming(const HexMesh& mesh) {
     }
     long long rim_edges = 0;
     for (const auto& [edge, count] : rim) rim_edges += count == 1;
-    expected += 2 * per_layer + s.layers * rim_edges;
+    expected += (s.source >= 0 ? 2 * per_layer : 0) + s.layers * rim_edges;  // a full turn has no caps
   }
   EXPECT_EQ(boundary, expected);
 }
@@ -329,7 +329,7 @@ TEST(Sweep, SecondOrderPutsEdgeMiddlesOnTheGeometryAndThePaths) {
   EXPECT_EQ(tori, 1);
 }
 
-TEST(Sweep, RevolutionsThatTouchTheirAxisOrCloseAreRefused) {
+TEST(Sweep, RevolutionsThatTouchTheirAxisAreRefused) {
   SweepOptions options;
   options.face.size = 2.0;
   try {
@@ -338,11 +338,44 @@ TEST(Sweep, RevolutionsThatTouchTheirAxisOrCloseAreRefused) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("touches the axis of its revolution"), std::string::npos) << e.what();
   }
+  // A ball: every face turns about an axis, but its profile (a half disk) touches it.
   try {
-    sweep_shape(revolved(2 * M_PI), options);  // a whole ring: no caps
-    FAIL() << "a whole ring swept";
+    sweep_shape(BRepPrimAPI_MakeSphere(5).Shape(), options);
+    FAIL() << "a ball swept";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("not an extrusion or a revolution"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("touches the axis"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Sweep, AFullRevolutionIsItsProfileTurnedAllTheWayRound) {
+  // The profile with a hole turned a full turn: no caps, so its section by a half-plane
+  // through the axis is meshed and turned, the last layer joined to the first.
+  const TopoDS_Shape ring = revolved(2 * M_PI);
+  Bnd_Box box;
+  BRepBndLib::Add(ring, box);
+  SweepOptions options;
+  options.face.size = std::sqrt(box.SquareExtent()) / 50;
+  const SweepResult r = sweep_shape(ring, options);
+  ASSERT_EQ(r.mesh.solids.size(), 1u);
+  const SweptSolid& s = r.mesh.solids[0];
+  EXPECT_EQ(s.source, -1);
+  EXPECT_TRUE(s.rotation);
+  EXPECT_NEAR(std::abs(s.angle), 2 * M_PI, 1e-12);
+  EXPECT_EQ(s.layers, static_cast<int>(std::lround(2 * M_PI * 20 / options.face.size)));
+  for (double sj : r.mesh.scaled_jacobian) ASSERT_GT(sj, 0.2);
+  expect_conforming(r.mesh);
+  // Every node in a hexahedron and none twice: the layers close on the first.
+  std::set<NodeId> used;
+  for (const Hex& h : r.mesh.hexes) used.insert(h.begin(), h.end());
+  EXPECT_EQ(used.size(), r.mesh.nodes.size());
+  EXPECT_EQ(r.mesh.nodes.size() % s.layers, 0u);
+  EXPECT_NEAR(hexes_volume(r.mesh, s), volume_of(ring), 0.01 * volume_of(ring));
+  // Each of its five faces (outer and inner walls, top, bottom, the hole's torus) has
+  // its nodes, in every layer.
+  EXPECT_EQ(r.mesh.face_nodes.size(), 5u);
+  for (const auto& [face, nodes] : r.mesh.face_nodes) {
+    EXPECT_EQ(nodes.size() % s.layers, 0u) << "face " << face;
+    EXPECT_GE(nodes.size(), 2u * s.layers) << "face " << face;
   }
 }
 

@@ -2,6 +2,8 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepAlgoAPI_Common.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
@@ -12,6 +14,7 @@
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
+#include <gp_Ax3.hxx>
 #include <gp_Lin.hxx>
 #include <gp_Pln.hxx>
 #include <gp_Trsf.hxx>
@@ -66,6 +69,7 @@ std::string face_name(int f) { return "face " + std::to_string(f); }
 // rotation by `angle` about `axis` (a revolution); `at(p, f)` is the fraction f of it.
 struct SweepMotion {
   bool rotation = false;
+  bool closed = false;  // a full turn: the last layer is the first
   gp_Vec d;
   gp_Ax1 axis;
   double angle = 0.0;
@@ -201,6 +205,7 @@ struct SolidCaps {
   int source = -1, target = -1;
   SweepMotion motion;
   std::string why_not;  // when none: the first reason met
+  TopoDS_Shape profile;  // a full turn's source: the solid's section by a half-plane
 };
 
 // The caps of the solid: the pair given, or the valid pair whose source has the most
@@ -236,24 +241,106 @@ SolidCaps find_caps(const ShapeIndex& index, const std::vector<int>& solid_faces
   return best;
 }
 
+// Whether face f is a surface of revolution about `axis` (a plane across it, a
+// coaxial cylinder, cone, torus or revolved surface, a sphere centred on it).
+bool turns_about(const TopoDS_Face& f, const gp_Ax1& axis, double tol) {
+  const BRepAdaptor_Surface surface(f);
+  const gp_Lin line(axis);
+  const auto coaxial = [&](const gp_Ax1& other) {
+    return other.IsParallel(axis, 1e-9) && line.Distance(other.Location()) <= tol;
+  };
+  switch (surface.GetType()) {
+    case GeomAbs_Plane: return surface.Plane().Axis().IsParallel(axis, 1e-9);
+    case GeomAbs_Cylinder: return coaxial(surface.Cylinder().Axis());
+    case GeomAbs_Cone: return coaxial(surface.Cone().Axis());
+    case GeomAbs_Torus: return coaxial(surface.Torus().Axis());
+    case GeomAbs_Sphere: return line.Distance(surface.Sphere().Location()) <= tol;
+    case GeomAbs_SurfaceOfRevolution: return coaxial(surface.AxeOfRevolution());
+    default: return false;
+  }
+}
+
+// A solid whose every face turns about one axis (that of its first circular edge) is a
+// full revolution of its section by a half-plane through the axis: that section, the
+// profile, is its source. Empty `profile` (with the reason) when it is not one.
+SolidCaps full_revolution(const ShapeIndex& index, const TopoDS_Shape& solid, const SolidFaces& faces, double tol,
+                          double diagonal) {
+  SolidCaps out;
+  if (faces.circles.empty()) {
+    out.why_not = "no circular edge gives an axis";
+    return out;
+  }
+  const gp_Ax1 axis = BRepAdaptor_Curve(index.edge(faces.circles.front())).Circle().Axis();
+  for (int f : faces.faces) {
+    if (!turns_about(index.face(f), axis, tol)) {
+      out.why_not = face_name(f) + " does not turn about the axis of edge " + std::to_string(faces.circles.front());
+      return out;
+    }
+  }
+  // The half-plane at a generic angle from a vertex off the axis (clear of seams).
+  const gp_Lin line(axis);
+  gp_Vec radial;
+  for (const auto& [f, points] : faces.vertices) {
+    for (const gp_Pnt& v : points) {
+      if (line.Distance(v) > tol) {
+        const gp_Vec off(axis.Location(), v);
+        radial = off - gp_Vec(axis.Direction()) * off.Dot(gp_Vec(axis.Direction()));
+        break;
+      }
+    }
+    if (radial.Magnitude() > 0) break;
+  }
+  if (!(radial.Magnitude() > 0)) {
+    out.why_not = "all its vertices lie on its axis";
+    return out;
+  }
+  gp_Trsf turn;
+  turn.SetRotation(axis, 0.4142);
+  const gp_Dir x(radial.Transformed(turn)), z = axis.Direction();
+  const gp_Dir normal = z.Crossed(x);
+  const double reach = 4 * diagonal;
+  const gp_Pln plane(gp_Ax3(axis.Location(), normal, x));
+  const TopoDS_Face half = BRepBuilderAPI_MakeFace(plane, 0.0, reach, -reach, reach).Face();
+  BRepAlgoAPI_Common section(solid, half);
+  if (!section.IsDone()) {
+    out.why_not = "its section by a half-plane through the axis failed";
+    return out;
+  }
+  TopTools_IndexedMapOfShape pieces;
+  TopExp::MapShapes(section.Shape(), TopAbs_FACE, pieces);
+  if (pieces.Extent() != 1) {
+    out.why_not = "its section by a half-plane through the axis is " + std::to_string(pieces.Extent()) + " faces";
+    return out;
+  }
+  for (const gp_Pnt& v : vertex_points(pieces(1))) {
+    if (line.Distance(v) <= tol) {
+      out.why_not = "its profile touches the axis of its revolution: the hexahedra there would be wedges";
+      return out;
+    }
+  }
+  out.profile = pieces(1);
+  out.motion.rotation = true;
+  out.motion.closed = true;
+  out.motion.axis = axis;
+  out.motion.angle = 2 * M_PI;
+  return out;
+}
+
 double shape_diagonal(const TopoDS_Shape& shape) {
   Bnd_Box box;
   BRepBndLib::Add(shape, box);
   return box.IsVoid() ? 1.0 : std::sqrt(box.SquareExtent());
 }
 
-double point_to_edge(const gp_Pnt& p, const TopoDS_Edge& edge) {
-  BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeVertex(p).Vertex(), edge);
-  return distance.IsDone() && distance.NbSolution() > 0 ? distance.Value() : INFINITY;
-}
-
 // One solid's hexahedra, appended to `out`; throws InputError naming what failed.
 void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, const std::vector<int>& solid_faces,
                  const SolidCaps& caps, const SweepOptions& options, double tol, HexMesh& out, double& size) {
   ShapeMeshOptions face = options.face;
-  face.faces = {caps.source};
   face.keep_going = false;
-  const ShapeMeshResult source = mesh_shape(shape, face);
+  const bool closed = caps.motion.closed;
+  if (!closed) face.faces = {caps.source};
+  if (closed) face.damaged_faces.clear();  // numbered for the shape, not the profile
+  const ShapeMeshResult source = mesh_shape(closed ? caps.profile : shape, face);
   size = source.size;
   // The source's nodes, compacted to those of its quads.
   std::map<NodeId, NodeId> compact;
@@ -271,17 +358,20 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
   int layers = std::max(1, static_cast<int>(std::lround(height / size)));
   if (motion.rotation) layers = std::max(layers, static_cast<int>(std::ceil(std::abs(motion.angle) / (M_PI / 4) - 1e-9)));
   if (options.layers > 0) layers = options.layers;
+  if (closed && layers < 3) layers = 3;  // fewer would join a layer to itself
+  const int stored = closed ? layers : layers + 1;  // a full turn's last layer is its first
   const long long count = static_cast<long long>(base.size());
   if (count * (layers + 1) > static_cast<long long>(INT32_MAX)) {
     throw InputError("solid " + std::to_string(solid) + ": the sweep would have over 2^31 nodes; use fewer layers or a larger size");
   }
   const NodeId offset = static_cast<NodeId>(out.nodes.size());
-  for (int k = 0; k <= layers; ++k) {
+  for (int k = 0; k < stored; ++k) {
     for (const Vec3& p : base) {
       out.nodes.push_back(k == 0 ? p : to_vec3(motion.at(gp_Pnt(p.x, p.y, p.z), static_cast<double>(k) / layers)));
     }
   }
-  const auto at = [&](NodeId n, int k) { return static_cast<NodeId>(offset + k * count + compact.at(n)); };
+  const auto layer = [&](int k) { return k % stored; };
+  const auto at = [&](NodeId n, int k) { return static_cast<NodeId>(offset + layer(k) * count + compact.at(n)); };
   // Second order: the source's edge middles (on its surface and curves) moved to every
   // layer, and a middle on each node's path between layers (on the side surface: the
   // path is the motion's own).
@@ -306,7 +396,7 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
     throw InputError("solid " + std::to_string(solid) + ": the sweep would have over 2^31 nodes; use fewer layers or a larger size");
   }
   const NodeId plane_offset = static_cast<NodeId>(out.nodes.size());
-  for (int k = 0; k <= layers && second; ++k) {
+  for (int k = 0; k < stored && second; ++k) {
     for (const Vec3& p : base_middles) {
       out.nodes.push_back(k == 0 ? p : to_vec3(motion.at(gp_Pnt(p.x, p.y, p.z), static_cast<double>(k) / layers)));
     }
@@ -316,7 +406,7 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
     for (const Vec3& p : base) out.nodes.push_back(to_vec3(motion.at(gp_Pnt(p.x, p.y, p.z), (k + 0.5) / layers)));
   }
   const auto plane_middle = [&](NodeId a, NodeId b, int k) {
-    return static_cast<NodeId>(plane_offset + k * middles + compact_middle.at(middle_of.at(std::minmax(a, b))));
+    return static_cast<NodeId>(plane_offset + layer(k) * middles + compact_middle.at(middle_of.at(std::minmax(a, b))));
   };
   const auto path_middle = [&](NodeId n, int k) { return static_cast<NodeId>(path_offset + k * count + compact.at(n)); };
   SweptSolid record;
@@ -372,36 +462,56 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
   }
   record.hex_count = static_cast<std::int64_t>(out.hexes.size()) - record.first_hex;
   out.solids.push_back(record);
-  // Node sets: the caps, then each side face through its source edge's nodes.
-  std::vector<NodeId> source_nodes, target_nodes;
-  for (NodeId i = 0; i < count; ++i) {
-    source_nodes.push_back(offset + i);
-    target_nodes.push_back(static_cast<NodeId>(offset + layers * count + i));
+  // Node sets: the caps (an extrusion's or a partial revolution's), then each side face
+  // through the source's boundary nodes on it (a full turn's faces are all sides).
+  if (!closed) {
+    std::vector<NodeId> source_nodes, target_nodes;
+    for (NodeId i = 0; i < count; ++i) {
+      source_nodes.push_back(offset + i);
+      target_nodes.push_back(static_cast<NodeId>(offset + layers * count + i));
+    }
+    for (NodeId i = 0; i < middles && second; ++i) {
+      source_nodes.push_back(plane_offset + i);
+      target_nodes.push_back(static_cast<NodeId>(plane_offset + layers * middles + i));
+    }
+    out.face_nodes.emplace_back(caps.source, source_nodes);
+    out.face_nodes.emplace_back(caps.target, target_nodes);
   }
-  for (NodeId i = 0; i < middles && second; ++i) {
-    source_nodes.push_back(plane_offset + i);
-    target_nodes.push_back(static_cast<NodeId>(plane_offset + layers * middles + i));
+  // The source's boundary: corners and middles on edges of one quad only.
+  std::map<std::pair<NodeId, NodeId>, int> uses;
+  for (const Quad& q : source.mesh.quads) {
+    for (int i = 0; i < 4; ++i) ++uses[std::minmax(q[i], q[(i + 1) % 4])];
   }
-  out.face_nodes.emplace_back(caps.source, source_nodes);
-  out.face_nodes.emplace_back(caps.target, target_nodes);
-  const std::set<int> source_edges = edges_of(index, caps.source);
+  std::set<NodeId> rim_corners, rim_middles;
+  for (const auto& [edge, n] : uses) {
+    if (n != 1) continue;
+    rim_corners.insert(edge.first);
+    rim_corners.insert(edge.second);
+    if (second) rim_middles.insert(middle_of.at(edge));
+  }
   for (int f : solid_faces) {
     if (f == caps.source || f == caps.target) continue;
+    Bnd_Box box;
+    BRepBndLib::Add(index.face(f), box);
+    box.Enlarge(tol);
+    const auto on_face = [&](NodeId original) {
+      const Vec3& p = source.mesh.nodes[original];
+      const gp_Pnt point(p.x, p.y, p.z);
+      if (box.IsOut(point)) return false;
+      BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeVertex(point).Vertex(), index.face(f));
+      return distance.IsDone() && distance.NbSolution() > 0 && distance.Value() <= tol;
+    };
     std::vector<NodeId> nodes;
-    for (int e : edges_of(index, f)) {
-      if (!source_edges.count(e)) continue;
-      const TopoDS_Edge& edge = index.edge(e);
-      for (const auto& [original, i] : compact) {
-        const Vec3& p = source.mesh.nodes[original];
-        if (point_to_edge(gp_Pnt(p.x, p.y, p.z), edge) > tol) continue;
-        for (int k = 0; k <= layers; ++k) nodes.push_back(static_cast<NodeId>(offset + k * count + i));
-        for (int k = 0; k < layers && second; ++k) nodes.push_back(static_cast<NodeId>(path_offset + k * count + i));
-      }
-      for (const auto& [original, i] : compact_middle) {
-        const Vec3& p = source.mesh.nodes[original];
-        if (point_to_edge(gp_Pnt(p.x, p.y, p.z), edge) > tol) continue;
-        for (int k = 0; k <= layers; ++k) nodes.push_back(static_cast<NodeId>(plane_offset + k * middles + i));
-      }
+    for (NodeId original : rim_corners) {
+      if (!on_face(original)) continue;
+      const NodeId i = compact.at(original);
+      for (int k = 0; k < stored; ++k) nodes.push_back(static_cast<NodeId>(offset + k * count + i));
+      for (int k = 0; k < layers && second; ++k) nodes.push_back(static_cast<NodeId>(path_offset + k * count + i));
+    }
+    for (NodeId original : rim_middles) {
+      if (!on_face(original)) continue;
+      const NodeId i = compact_middle.at(original);
+      for (int k = 0; k < stored; ++k) nodes.push_back(static_cast<NodeId>(plane_offset + k * middles + i));
     }
     std::sort(nodes.begin(), nodes.end());
     out.face_nodes.emplace_back(f, nodes);
@@ -424,7 +534,8 @@ SweepResult sweep_shape(const TopoDS_Shape& shape, const SweepOptions& options) 
   TopTools_IndexedMapOfShape solids;
   TopExp::MapShapes(shape, TopAbs_SOLID, solids);
   if (solids.Extent() == 0) throw InputError("the shape has no solid to sweep (only faces or shells)");
-  const double tol = std::max(1e-6 * shape_diagonal(shape), 1e-9);
+  const double diagonal = shape_diagonal(shape);
+  const double tol = std::max(1e-6 * diagonal, 1e-9);
   SweepResult result;
   bool given_used = options.source < 0;
   for (int k = 1; k <= solids.Extent(); ++k) {
@@ -442,7 +553,20 @@ SweepResult sweep_shape(const TopoDS_Shape& shape, const SweepOptions& options) 
       caps.why_not = std::string("OpenCASCADE failed on its faces (") +
                      (e.GetMessageString() ? e.GetMessageString() : "no message") + ")";
     }
-    if (caps.source < 0) {
+    if (caps.source < 0 && !holds_given) {
+      // Not capped: perhaps a full turn about an axis.
+      try {
+        SolidCaps turn = full_revolution(index, solids(k), SolidFaces(index, solid_faces), tol, diagonal);
+        if (!turn.profile.IsNull()) {
+          caps = turn;
+        } else {
+          caps.why_not += "; nor a full revolution: " + turn.why_not;
+        }
+      } catch (const Standard_Failure&) {
+        caps.why_not += "; nor a full revolution: OpenCASCADE failed on its section";
+      }
+    }
+    if (caps.source < 0 && caps.profile.IsNull()) {
       if (holds_given) {
         throw InputError(face_name(options.source) + " and " + face_name(options.target) +
                          " are not the caps of an extrusion or a revolution: " + caps.why_not);
