@@ -76,7 +76,7 @@ def run_tquad(tquad, path, size, out_path, timeout):
     seconds = time.perf_counter() - start
     if r.returncode != 0:
         return {"status": "refused" if r.returncode == 2 else "failed", "seconds": seconds,
-                "error": (r.stderr.strip().splitlines() or [""])[-1][:300]}
+                "error": (r.stderr.strip().splitlines() or [""])[-1][:2000]}
     return {"status": "ok", "seconds": seconds, "report": json.loads(r.stdout)}
 
 
@@ -89,6 +89,9 @@ def gmsh_case(path, cases, size):
     results = []
     for case in cases:
         gmsh.clear()
+        if "skip" in case:
+            results.append({"status": case["skip"]})
+            continue
         try:
             gmsh.model.occ.importShapes(path)
             gmsh.model.occ.synchronize()
@@ -189,6 +192,10 @@ def part_job(part, args, work):
     row["volume"] = float(volume.sum())
     cases = []
     for s in mesh["solids"]:
+        if s["source"] < 0:  # a full revolution: its source is a section, no face of the part
+            cases.append({"skip": "a full revolution (its source is a section, not a face)"})
+            s["min"] = float(sj[s["first_hex"]:s["first_hex"] + s["hex_count"]].min())
+            continue
         nodes = np.array(mesh["face_nodes"][str(s["source"])], dtype=np.int64)
         box = list(points[nodes].min(axis=0)) + list(points[nodes].max(axis=0))
         case = {"source_box": [float(v) for v in box], "layers": s["layers"]}
@@ -200,7 +207,8 @@ def part_job(part, args, work):
         first_hex, count = s["first_hex"], s["hex_count"]
         s["min"] = float(sj[first_hex:first_hex + count].min())
     row["per_solid"] = [{"solid": s["solid"], "layers": s["layers"], "hexes": s["hex_count"], "min": s["min"],
-                         "motion": "rotation" if "rotation" in s else "translation"} for s in mesh["solids"]]
+                         "motion": ("full revolution" if s["source"] < 0 else "rotation") if "rotation" in s
+                         else "translation"} for s in mesh["solids"]]
     if not args.no_gmsh and cases:
         row["gmsh"] = run_gmsh(part["path"], cases, size, args.timeout)
     os.remove(out)
@@ -214,7 +222,13 @@ def refusal_reasons(run):
 
 
 def reason_class(reason):
-    """A refusal's reason without its face and edge numbers."""
+    """A refusal's reason without its face and edge numbers: why no caps were found, and
+    why it is not a full revolution either."""
+    caps, _, turn = reason.partition("; nor a full revolution: ")
+    return caps_class(caps) + ("; not a full revolution: " + caps_class(turn) if turn else "")
+
+
+def caps_class(reason):
     text = reason.split(": ", 1)[-1] if reason.startswith("/") or reason.startswith(REPO) else reason
     for key, label in (("no solid to sweep", "no solid (faces or shells only)"),
                        ("touches the axis", "a revolution's profile touches its axis"),
@@ -226,7 +240,10 @@ def reason_class(reason):
                        ("is not planar", "no two planar faces"),
                        ("no two planar faces", "no two planar faces"),
                        ("source face was not meshed", "the source face was refused"),
-                       ("inverted or degenerate", "hexahedra would be inverted")):
+                       ("inverted or degenerate", "hexahedra would be inverted"),
+                       ("does not turn about the axis", "a face does not turn about the axis"),
+                       ("no circular edge gives an axis", "no circular edge"),
+                       ("section by a half-plane", "its half-plane section is not one face")):
         if key in text:
             return label
     return text[:80]
@@ -248,9 +265,12 @@ def markdown(rows, args, info, total_seconds):
     parts_swept = sum(1 for r in rows if r.get("solids"))
     hexes = sum(r.get("hexes", 0) for r in rows)
     bad = sum(r.get("bad", 0) for r in rows)
+    motions = collections.Counter(s["motion"] for r in rows for s in r.get("per_solid", []))
     out += ["## Summary", "",
-            "- H = D / %g. Parts with a solid swept: %d of %d; solids swept: %d; hexahedra %d, with a "
-            "corner at or below 1e-6: %d." % (args.divisor, parts_swept, len(rows), swept, hexes, bad), ""]
+            "- H = D / %g. Parts with a solid swept: %d of %d; solids swept: %d (%s); hexahedra %d, with a "
+            "corner at or below 1e-6: %d." % (args.divisor, parts_swept, len(rows), swept,
+                                               ", ".join("%d by %s" % (v, k) for k, v in sorted(motions.items())),
+                                               hexes, bad), ""]
     out += ["Refused (a solid each, or a whole part where none was swept), by reason:", "",
             "| reason | count |", "|---|---:|"]
     out += ["| %s | %d |" % (k, v) for k, v in refused.most_common()]
