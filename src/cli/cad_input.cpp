@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "cli/exit_status.h"
 #include "cli/shape_arguments.h"
 #include "core/elapsed.h"
 #include "core/input_error.h"
@@ -93,24 +94,14 @@ extern "C" __attribute__((visibility("default"))) int tquad_mesh_cad_input(const
                                                                           std::ostream& err,
                                                                           tquad::CadInputMesh& out,
                                                                           std::string& error) {
-  try {
-    // tquad reports problems itself, one line each; OpenCASCADE's readers would print
-    // their own diagnostics on stdout, which --report json keeps for the report.
-    Message::DefaultMessenger()->ChangePrinters().Clear();
-    out = tquad::mesh_cad_input(command, err);
-    return 0;
-  } catch (const tquad::InputError& e) {
-    error = e.what();
-    return 2;
-  } catch (const std::bad_alloc&) {
-    return 3;
-  } catch (const std::exception& e) {
-    error = e.what();
-    return 1;
-  } catch (...) {
-    error = "unknown exception";
-    return 1;
-  }
+  // tquad reports problems itself, one line each; OpenCASCADE's readers would print
+  // their own diagnostics on stdout, which --report json keeps for the report.
+  return tquad::module_status_of(
+      [&] {
+        Message::DefaultMessenger()->ChangePrinters().Clear();
+        out = tquad::mesh_cad_input(command, err);
+      },
+      error);
 }
 
 // The entry point's type is checked against the loader's.

@@ -29,6 +29,7 @@
 #include "io/svg_writer.h"
 #include "io/vtu_writer.h"
 #include "cli/cad_input.h"
+#include "cli/exit_status.h"
 #include "occ/model/edge_contraction.h"
 #include "occ/read/shape_formats.h"
 
@@ -73,12 +74,6 @@ std::string fixed(double value, int digits) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.*f", digits, value);
   return buffer;
-}
-
-// Messages are one line on stderr.
-std::string one_line(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  return text;
 }
 
 // Two aligned rows: the scaled Jacobian's bins (below 0, then each tenth's lower
@@ -341,21 +336,7 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
 }  // namespace
 
 int run_mesh_command(const MeshCommand& command, std::ostream& out, std::ostream& err) {
-  try {
-    return run(command, out, err);
-  } catch (const InputError& e) {
-    err << "tquad: error: " << one_line(e.what()) << "\n";
-    return 2;
-  } catch (const std::bad_alloc&) {
-    err << "tquad: error: internal failure: out of memory (try a smaller --max-quads)\n";
-    return 1;
-  } catch (const std::exception& e) {
-    err << "tquad: error: internal failure: " << one_line(e.what()) << "\n";
-    return 1;
-  } catch (...) {
-    err << "tquad: error: internal failure: unknown exception\n";
-    return 1;
-  }
+  return exit_status_of([&] { return run(command, out, err); }, err, "try a smaller --max-quads");
 }
 
 }  // namespace tquad

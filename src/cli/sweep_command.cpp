@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cad_input.h"
+#include "cli/exit_status.h"
 #include "core/input_error.h"
 #include "io/atomic_file_writer.h"
 #include "io/hex_writers.h"
@@ -16,11 +17,6 @@
 namespace tquad {
 
 namespace {
-
-std::string one_line(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  return text;
-}
 
 std::string fixed(double value, int digits) {
   char buffer[64];
@@ -104,21 +100,7 @@ int run(const SweepCommand& command, std::ostream& out, std::ostream& err) {
 }  // namespace
 
 int run_sweep_command(const SweepCommand& command, std::ostream& out, std::ostream& err) {
-  try {
-    return run(command, out, err);
-  } catch (const InputError& e) {
-    err << "tquad: error: " << one_line(e.what()) << "\n";
-    return 2;
-  } catch (const std::bad_alloc&) {
-    err << "tquad: error: internal failure: out of memory (use a larger --size or fewer --layers)\n";
-    return 1;
-  } catch (const std::exception& e) {
-    err << "tquad: error: internal failure: " << one_line(e.what()) << "\n";
-    return 1;
-  } catch (...) {
-    err << "tquad: error: internal failure: unknown exception\n";
-    return 1;
-  }
+  return exit_status_of([&] { return run(command, out, err); }, err, "use a larger --size or fewer --layers");
 }
 
 }  // namespace tquad

@@ -6,6 +6,7 @@
 #include <string>
 #include <type_traits>
 
+#include "cli/exit_status.h"
 #include "cli/sweep_command.h"
 #include "core/input_error.h"
 #include "occ/read/isolated_reader.h"
@@ -38,22 +39,12 @@ SweepOutput sweep_cad_input(const SweepCommand& command) {
 extern "C" __attribute__((visibility("default"))) int tquad_sweep_cad_input(const tquad::SweepCommand& command,
                                                                            tquad::SweepOutput& out,
                                                                            std::string& error) {
-  try {
-    Message::DefaultMessenger()->ChangePrinters().Clear();
-    out = tquad::sweep_cad_input(command);
-    return 0;
-  } catch (const tquad::InputError& e) {
-    error = e.what();
-    return 2;
-  } catch (const std::bad_alloc&) {
-    return 3;
-  } catch (const std::exception& e) {
-    error = e.what();
-    return 1;
-  } catch (...) {
-    error = "unknown exception";
-    return 1;
-  }
+  return tquad::module_status_of(
+      [&] {
+        Message::DefaultMessenger()->ChangePrinters().Clear();
+        out = tquad::sweep_cad_input(command);
+      },
+      error);
 }
 
 static_assert(std::is_same_v<decltype(&tquad_sweep_cad_input), tquad::SweepCadInputEntry>);

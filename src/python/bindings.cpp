@@ -79,15 +79,21 @@ py::array_t<std::int32_t> index_rows(const std::vector<Quad>& rows) {
   return array;
 }
 
-// The mesh as plain Python data: numpy arrays for nodes and quads (copied once).
-py::dict mesh_dict(const ShapeMesh& mesh, const QualitySummary& quality) {
-  py::array_t<double> nodes({static_cast<py::ssize_t>(mesh.nodes.size()), py::ssize_t{3}});
+// Nodes as an N x 3 float64 array (copied once).
+py::array_t<double> node_array(const std::vector<Vec3>& points) {
+  py::array_t<double> nodes({static_cast<py::ssize_t>(points.size()), py::ssize_t{3}});
   auto n = nodes.mutable_unchecked<2>();
   for (py::ssize_t i = 0; i < n.shape(0); ++i) {
-    n(i, 0) = mesh.nodes[i].x;
-    n(i, 1) = mesh.nodes[i].y;
-    n(i, 2) = mesh.nodes[i].z;
+    n(i, 0) = points[i].x;
+    n(i, 1) = points[i].y;
+    n(i, 2) = points[i].z;
   }
+  return nodes;
+}
+
+// The mesh as plain Python data: numpy arrays for nodes and quads (copied once).
+py::dict mesh_dict(const ShapeMesh& mesh, const QualitySummary& quality) {
+  const py::array_t<double> nodes = node_array(mesh.nodes);
   py::list faces, refused;
   for (const FaceMesh& f : mesh.faces) {
     py::dict d;
@@ -164,6 +170,28 @@ bool looks_like_brep_text(const std::string& s) {
   return s.find("CASCADE Topology") != std::string::npos || s.rfind("DBRep_DrawableShape", 0) == 0;
 }
 
+// The shape of BREP text (FreeCAD's exportBrepToString) or of a file, read in a child
+// process: a damaged input must not take the interpreter (FreeCAD) down.
+ReadShape read_text_or_file(const std::string& brep_text_or_path, const ReadLimits& limits) {
+  return looks_like_brep_text(brep_text_or_path) ? read_brep_text_isolated(brep_text_or_path, limits)
+                                                 : read_shape_isolated(brep_text_or_path, limits);
+}
+
+// The numbers mesh_shape and sweep_shape take as the command does: InputError
+// (ValueError) naming the keyword. A read_timeout of 0 is the default, scaled to the
+// input's size (isolated_reader.h).
+void check_sizes_and_timeout(double size, double min_size, double read_timeout) {
+  if (!(size >= 0) || !std::isfinite(size)) {
+    throw InputError("size must be a finite positive number (or 0 for the default), not " + std::to_string(size));
+  }
+  if (!(min_size >= 0) || !std::isfinite(min_size)) {
+    throw InputError("min_size must be a finite number of 0 (no floor) or more, not " + std::to_string(min_size));
+  }
+  if (read_timeout != 0 && !(read_timeout >= kMinReadSeconds && read_timeout <= kMaxReadSeconds)) {
+    throw InputError("read_timeout must be between 0.001 and 1e6 seconds, not " + std::to_string(read_timeout));
+  }
+}
+
 py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, const std::vector<int>& faces,
                             const std::map<int, std::vector<int>>& corners, bool keep_going,
                             bool allow_inverted, int threads, int t4_ratio, int t5_cut_edges,
@@ -200,16 +228,7 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
   options.allow_inverted = allow_inverted;
   options.threads = threads;
   options.templates = template_options(t4_ratio, t5_cut_edges, max_quads);
-  if (!(size >= 0) || !std::isfinite(size)) {
-    throw InputError("size must be a finite positive number (or 0 for the default), not " + std::to_string(size));
-  }
-  if (!(min_size >= 0) || !std::isfinite(min_size)) {
-    throw InputError("min_size must be a finite number of 0 (no floor) or more, not " + std::to_string(min_size));
-  }
-  // 0: the default, scaled to the input's size (isolated_reader.h).
-  if (read_timeout != 0 && !(read_timeout >= kMinReadSeconds && read_timeout <= kMaxReadSeconds)) {
-    throw InputError("read_timeout must be between 0.001 and 1e6 seconds, not " + std::to_string(read_timeout));
-  }
+  check_sizes_and_timeout(size, min_size, read_timeout);
   ReadLimits limits;
   limits.seconds = read_timeout;
   ShapeMeshResult result;
@@ -217,9 +236,7 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
   std::vector<std::string> read_warnings;
   {
     py::gil_scoped_release release;
-    // Read in a child process: a damaged file must not take FreeCAD down.
-    const ReadShape read = looks_like_brep_text(brep_text_or_path) ? read_brep_text_isolated(brep_text_or_path, limits)
-                                                                   : read_shape_isolated(brep_text_or_path, limits);
+    const ReadShape read = read_text_or_file(brep_text_or_path, limits);
     read_warnings = read.warnings;
     const TopoDS_Shape& shape = read.shape;
     for (int f : read.invalid_faces) options.damaged_faces[f] = kInvalidFaceReason;
@@ -296,15 +313,7 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
 py::dict sweep_shape_binding(const std::string& brep_text_or_path, double size, double min_size, int layers,
                              int source, int target, bool keep_going, bool smooth, int threads,
                              double read_timeout, int order) {
-  if (!(size >= 0) || !std::isfinite(size)) {
-    throw InputError("size must be a finite positive number (or 0 for the default), not " + std::to_string(size));
-  }
-  if (!(min_size >= 0) || !std::isfinite(min_size)) {
-    throw InputError("min_size must be a finite number of 0 (no floor) or more, not " + std::to_string(min_size));
-  }
-  if (read_timeout != 0 && !(read_timeout >= kMinReadSeconds && read_timeout <= kMaxReadSeconds)) {
-    throw InputError("read_timeout must be between 0.001 and 1e6 seconds, not " + std::to_string(read_timeout));
-  }
+  check_sizes_and_timeout(size, min_size, read_timeout);
   SweepOptions options;
   options.face.size = size;
   options.face.min_size = min_size;
@@ -321,20 +330,13 @@ py::dict sweep_shape_binding(const std::string& brep_text_or_path, double size, 
   std::vector<std::string> read_warnings;
   {
     py::gil_scoped_release release;
-    const ReadShape read = looks_like_brep_text(brep_text_or_path) ? read_brep_text_isolated(brep_text_or_path, limits)
-                                                                   : read_shape_isolated(brep_text_or_path, limits);
+    const ReadShape read = read_text_or_file(brep_text_or_path, limits);
     read_warnings = read.warnings;
     for (int f : read.invalid_faces) options.face.damaged_faces[f] = kInvalidFaceReason;
     result = sweep_shape(read.shape, options);
   }
   const HexMesh& mesh = result.mesh;
-  py::array_t<double> nodes({static_cast<py::ssize_t>(mesh.nodes.size()), py::ssize_t{3}});
-  auto n = nodes.mutable_unchecked<2>();
-  for (py::ssize_t i = 0; i < n.shape(0); ++i) {
-    n(i, 0) = mesh.nodes[i].x;
-    n(i, 1) = mesh.nodes[i].y;
-    n(i, 2) = mesh.nodes[i].z;
-  }
+  const py::array_t<double> nodes = node_array(mesh.nodes);
   const int per = mesh.nodes_per_element();
   py::array_t<std::int32_t> hexes({static_cast<py::ssize_t>(mesh.hexes.size()), py::ssize_t{per}});
   auto h = hexes.mutable_unchecked<2>();
