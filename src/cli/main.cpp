@@ -147,7 +147,8 @@ int run_cli(int argc, char** argv) {
       ->required();
   sweep->add_option("-o,--output", sweep_command.output,
                     "Output file: .inp (CalculiX/Abaqus C3D8, an element set SOLID<k> per solid,\n"
-                    "a node set FACE<f> and a surface SFACE<f> per face), .vtu (VTK hexahedra) or .json")
+                    "a node set FACE<f> and a surface SFACE<f> per face), .vtu (VTK hexahedra), .msh\n"
+                    "(Gmsh 4.1) or .json")
       ->type_name("OUTPUT")
       ->required();
   sweep->add_option("--report", sweep_report, "Print a JSON report instead of the summary")

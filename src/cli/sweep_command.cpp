@@ -41,7 +41,7 @@ int run(const SweepCommand& command, std::ostream& out, std::ostream& err) {
     throw InputError(command.input + ": tquad sweep takes a CAD shape (.step .stp .iges .igs .brep)");
   }
   if (!is_hex_output(command.output)) {
-    throw InputError(command.output + ": a swept mesh is written as .inp, .vtu or .json");
+    throw InputError(command.output + ": a swept mesh is written as .inp, .vtu, .msh or .json");
   }
   check_output_location(command.output);
   const SweepOutput result = sweep_through_module(command);

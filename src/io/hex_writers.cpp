@@ -265,21 +265,98 @@ void write_hex_json(std::ostream& out, const HexMesh& mesh) {
   flush_text(out, text);
 }
 
+void write_hex_msh(std::ostream& out, const HexMesh& mesh) {
+  check_hex_mesh(mesh);
+  // Gmsh's element types and its 20-node hexahedron's edge order (edges 0-1, 0-3, 0-4,
+  // 1-2, 1-5, 2-3, 2-6, 3-7, 4-5, 4-7, 5-6, 6-7), as positions in ours.
+  const int type = mesh.second_order() ? 17 : 5;
+  constexpr int kGmshEdges[12] = {0, 3, 8, 1, 9, 2, 10, 11, 4, 7, 5, 6};
+  // Each node in the block of the first solid whose hexahedra use it.
+  std::vector<int> owner(mesh.nodes.size(), -1);
+  for (std::size_t r = 0; r < mesh.solids.size(); ++r) {
+    const SweptSolid& s = mesh.solids[r];
+    for (std::int64_t k = s.first_hex; k < s.first_hex + s.hex_count; ++k) {
+      for (NodeId n : mesh.element_nodes(static_cast<std::size_t>(k))) {
+        if (owner[n] < 0) owner[n] = static_cast<int>(r);
+      }
+    }
+  }
+  std::vector<std::vector<NodeId>> blocks(mesh.solids.size());
+  for (std::size_t i = 0; i < owner.size(); ++i) {
+    if (owner[i] >= 0) blocks[owner[i]].push_back(static_cast<NodeId>(i));
+  }
+  std::string text = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 0 " + std::to_string(mesh.solids.size()) + "\n";
+  for (std::size_t r = 0; r < mesh.solids.size(); ++r) {
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (NodeId n : blocks[r]) {
+      const double c[3] = {mesh.nodes[n].x, mesh.nodes[n].y, mesh.nodes[n].z};
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = std::min(lo[a], c[a]);
+        hi[a] = std::max(hi[a], c[a]);
+      }
+    }
+    text += std::to_string(mesh.solids[r].solid + 1);
+    for (int a = 0; a < 3; ++a) {
+      text += " ";
+      append_double(text, blocks[r].empty() ? 0.0 : lo[a]);
+    }
+    for (int a = 0; a < 3; ++a) {
+      text += " ";
+      append_double(text, blocks[r].empty() ? 0.0 : hi[a]);
+    }
+    text += " 0 0\n";
+  }
+  std::size_t used = 0;
+  for (const auto& b : blocks) used += b.size();
+  text += "$EndEntities\n$Nodes\n" + std::to_string(mesh.solids.size()) + " " + std::to_string(used) + " 1 " +
+          std::to_string(mesh.nodes.size()) + "\n";
+  for (std::size_t r = 0; r < mesh.solids.size(); ++r) {
+    text += "3 " + std::to_string(mesh.solids[r].solid + 1) + " 0 " + std::to_string(blocks[r].size()) + "\n";
+    for (NodeId n : blocks[r]) text += std::to_string(n + 1) + "\n";
+    for (NodeId n : blocks[r]) {
+      append_double(text, mesh.nodes[n].x);
+      text += " ";
+      append_double(text, mesh.nodes[n].y);
+      text += " ";
+      append_double(text, mesh.nodes[n].z);
+      text += "\n";
+      flush_if_large(out, text);
+    }
+  }
+  text += "$EndNodes\n$Elements\n" + std::to_string(mesh.solids.size()) + " " + std::to_string(mesh.hexes.size()) +
+          " 1 " + std::to_string(mesh.hexes.size()) + "\n";
+  for (const SweptSolid& s : mesh.solids) {
+    text += "3 " + std::to_string(s.solid + 1) + " " + std::to_string(type) + " " + std::to_string(s.hex_count) + "\n";
+    for (std::int64_t k = s.first_hex; k < s.first_hex + s.hex_count; ++k) {
+      text += std::to_string(k + 1);
+      for (NodeId n : mesh.hexes[k]) text += " " + std::to_string(n + 1);
+      if (mesh.second_order()) {
+        for (int e : kGmshEdges) text += " " + std::to_string(mesh.mid_nodes[k][e] + 1);
+      }
+      text += "\n";
+      flush_if_large(out, text);
+    }
+  }
+  text += "$EndElements\n";
+  flush_text(out, text);
+}
+
 bool is_hex_output(const std::string& path) {
   const std::string ext = extension_of(path);
-  return ext == ".inp" || ext == ".vtu" || ext == ".json";
+  return ext == ".inp" || ext == ".vtu" || ext == ".json" || ext == ".msh";
 }
 
 void write_hex_file(const std::string& path, const HexMesh& mesh) {
   const std::string ext = extension_of(path);
   if (!is_hex_output(path)) {
-    throw InputError("'" + path + "': a swept mesh is written as .inp, .vtu or .json, not '" + ext + "'");
+    throw InputError("'" + path + "': a swept mesh is written as .inp, .vtu, .msh or .json, not '" + ext + "'");
   }
   check_hex_mesh(mesh);
   write_file_atomically(path, [&](std::ostream& out) {
     if (ext == ".inp") write_hex_inp(out, mesh);
     if (ext == ".vtu") write_hex_vtu(out, mesh);
     if (ext == ".json") write_hex_json(out, mesh);
+    if (ext == ".msh") write_hex_msh(out, mesh);
   });
 }
 

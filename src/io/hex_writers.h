@@ -8,6 +8,8 @@
 //   element k + 1 hexahedron k. Refused solids are listed as comments.
 // - .vtu (VTK XML, ASCII): VTK_HEXAHEDRON (type 12) or VTK_QUADRATIC_HEXAHEDRON (25)
 //   cells, cell data scaled_jacobian and solid.
+// - .msh (Gmsh 4.1 ASCII): a volume entity per swept solid (tag solid + 1), its
+//   nodes and its hexahedra (type 5, or 17 with Gmsh's edge order at second order).
 // - .json: {"nodes": [[x, y, z], ...], "hexes": [[8 or 20 node ids], ...] (0-based),
 //   "solids": [...], "refused_solids": [...], "face_nodes": {"<face>": [ids]}}.
 //
@@ -29,8 +31,9 @@ void check_hex_mesh(const HexMesh& mesh);
 void write_hex_inp(std::ostream& out, const HexMesh& mesh);
 void write_hex_vtu(std::ostream& out, const HexMesh& mesh);
 void write_hex_json(std::ostream& out, const HexMesh& mesh);
+void write_hex_msh(std::ostream& out, const HexMesh& mesh);
 
-// By PATH's extension (.inp, .vtu, .json); InputError for another extension.
+// By PATH's extension (.inp, .vtu, .msh, .json); InputError for another extension.
 void write_hex_file(const std::string& path, const HexMesh& mesh);
 
 // Whether PATH's extension is one write_hex_file writes.

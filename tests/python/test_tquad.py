@@ -232,6 +232,31 @@ class SweepShapeTest(unittest.TestCase):
         radius = np.hypot(m.nodes[m.face_nodes[side[0]], 0], m.nodes[m.face_nodes[side[0]], 1])
         np.testing.assert_allclose(radius, 10.0, rtol=1e-9)
 
+    def test_the_command_writes_the_same_hexahedra_to_vtu_and_msh(self):
+        """meshio reads `tquad sweep`'s .vtu and .msh (Gmsh 4.1, whose 20-node
+        hexahedron orders its edges otherwise) as the same cells, node for node."""
+        exe = os.environ.get("TQUAD_EXE", "")
+        try:
+            import meshio
+        except ImportError:
+            self.skipTest("meshio is not installed")
+        if not os.path.exists(exe):
+            self.skipTest("no tquad executable (TQUAD_EXE)")
+        import subprocess
+        import tempfile
+        with tempfile.TemporaryDirectory() as folder:
+            for order, cell in ((1, "hexahedron"), (2, "hexahedron20")):
+                read = {}
+                for ext in ("vtu", "msh"):
+                    out = os.path.join(folder, "b%d.%s" % (order, ext))
+                    r = subprocess.run([exe, "sweep", os.path.join(SHAPES, "filleted_bracket.brep"), "-o", out,
+                                        "--order", str(order), "--size", "4"], capture_output=True, text=True)
+                    self.assertEqual(r.returncode, 0, r.stderr)
+                    mesh = meshio.read(out)
+                    self.assertEqual(list(mesh.cells_dict), [cell])
+                    read[ext] = mesh.points[mesh.cells_dict[cell]]
+                np.testing.assert_array_equal(read["vtu"], read["msh"])
+
     def test_refusals_are_value_errors(self):
         with self.assertRaisesRegex(ValueError, "no solid to sweep"):
             tquad.sweep_shape(os.path.join(SHAPES, "plate_with_hole.brep"))
