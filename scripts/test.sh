@@ -7,7 +7,6 @@ repo_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 ctest --test-dir "$repo_dir/build" --output-on-failure --timeout 600 -j "$(nproc)"
 # The property tests record the worst element quality they saw, and the CAD tests a
 # table of faces meshed and refused per file; show them.
-grep -h -e "\[ quality  \]" -e "\[ shapes   \]" "$repo_dir/build/Testing/Temporary/LastTest.log" || true
 # In CI (CI=true), or with --sanitize: the C++ suites again under AddressSanitizer and
 # UndefinedBehaviorSanitizer, and a short run of each fuzz target (on 2 cores the
 # sanitizer build takes about 10 minutes and its suites about 8, with every fourth
