@@ -74,12 +74,18 @@ struct SweepMotion {
   gp_Ax1 axis;
   double angle = 0.0;
 
-  gp_Pnt at(const gp_Pnt& p, double f) const {
-    if (!rotation) return p.Translated(f * d);
-    gp_Trsf turn;
-    turn.SetRotation(axis, f * angle);
-    return p.Transformed(turn);
+  // The fraction f of the motion, to apply to many points (one rotation's sines a
+  // layer, not a node).
+  gp_Trsf part(double f) const {
+    gp_Trsf out;
+    if (rotation) {
+      out.SetRotation(axis, f * angle);
+    } else {
+      out.SetTranslation(f * d);
+    }
+    return out;
   }
+  gp_Pnt at(const gp_Pnt& p, double f) const { return p.Transformed(part(f)); }
   // The direction p moves in at the start.
   gp_Vec direction(const gp_Pnt& p) const {
     if (!rotation) return d;
@@ -210,9 +216,8 @@ struct SolidCaps {
 
 // The caps of the solid: the pair given, or the valid pair whose source has the most
 // edges (the profile; on a box every pair is valid), the lower face first on a tie.
-SolidCaps find_caps(const ShapeIndex& index, const std::vector<int>& solid_faces, const SweepOptions& options,
-                    double tol) {
-  const SolidFaces solid(index, solid_faces);
+SolidCaps find_caps(const ShapeIndex& index, const SolidFaces& solid, const SweepOptions& options, double tol) {
+  const std::vector<int>& solid_faces = solid.faces;
   SolidCaps best;
   const bool given = options.source >= 0;
   std::size_t best_edges = 0;
@@ -361,17 +366,6 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
   if (closed && layers < 3) layers = 3;  // fewer would join a layer to itself
   const int stored = closed ? layers : layers + 1;  // a full turn's last layer is its first
   const long long count = static_cast<long long>(base.size());
-  if (count * (layers + 1) > static_cast<long long>(INT32_MAX)) {
-    throw InputError("solid " + std::to_string(solid) + ": the sweep would have over 2^31 nodes; use fewer layers or a larger size");
-  }
-  const NodeId offset = static_cast<NodeId>(out.nodes.size());
-  for (int k = 0; k < stored; ++k) {
-    for (const Vec3& p : base) {
-      out.nodes.push_back(k == 0 ? p : to_vec3(motion.at(gp_Pnt(p.x, p.y, p.z), static_cast<double>(k) / layers)));
-    }
-  }
-  const auto layer = [&](int k) { return k % stored; };
-  const auto at = [&](NodeId n, int k) { return static_cast<NodeId>(offset + layer(k) * count + compact.at(n)); };
   // Second order: the source's edge middles (on its surface and curves) moved to every
   // layer, and a middle on each node's path between layers (on the side surface: the
   // path is the motion's own).
@@ -392,19 +386,22 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
     }
   }
   const long long middles = static_cast<long long>(base_middles.size());
-  if (count * (layers + 1) + (middles * (layers + 1) + count * layers) > static_cast<long long>(INT32_MAX) - offset) {
+  const auto offset = static_cast<long long>(out.nodes.size());
+  if ((count + middles) * stored + (second ? count * layers : 0) > static_cast<long long>(INT32_MAX) - offset) {
     throw InputError("solid " + std::to_string(solid) + ": the sweep would have over 2^31 nodes; use fewer layers or a larger size");
   }
-  const NodeId plane_offset = static_cast<NodeId>(out.nodes.size());
-  for (int k = 0; k < stored && second; ++k) {
-    for (const Vec3& p : base_middles) {
-      out.nodes.push_back(k == 0 ? p : to_vec3(motion.at(gp_Pnt(p.x, p.y, p.z), static_cast<double>(k) / layers)));
-    }
-  }
-  const NodeId path_offset = static_cast<NodeId>(out.nodes.size());
-  for (int k = 0; k < layers && second; ++k) {
-    for (const Vec3& p : base) out.nodes.push_back(to_vec3(motion.at(gp_Pnt(p.x, p.y, p.z), (k + 0.5) / layers)));
-  }
+  // `points` moved by the fraction f of the motion, appended to the mesh's nodes.
+  const auto add_moved = [&](const std::vector<Vec3>& points, double f) {
+    const gp_Trsf move = motion.part(f);
+    for (const Vec3& p : points) out.nodes.push_back(f == 0 ? p : to_vec3(gp_Pnt(p.x, p.y, p.z).Transformed(move)));
+  };
+  for (int k = 0; k < stored; ++k) add_moved(base, static_cast<double>(k) / layers);
+  const auto layer = [&](int k) { return k % stored; };
+  const auto at = [&](NodeId n, int k) { return static_cast<NodeId>(offset + layer(k) * count + compact.at(n)); };
+  const auto plane_offset = static_cast<long long>(out.nodes.size());
+  for (int k = 0; k < stored && second; ++k) add_moved(base_middles, static_cast<double>(k) / layers);
+  const auto path_offset = static_cast<long long>(out.nodes.size());
+  for (int k = 0; k < layers && second; ++k) add_moved(base, (k + 0.5) / layers);
   const auto plane_middle = [&](NodeId a, NodeId b, int k) {
     return static_cast<NodeId>(plane_offset + layer(k) * middles + compact_middle.at(middle_of.at(std::minmax(a, b))));
   };
@@ -458,7 +455,8 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
   }
   if (bad > 0) {
     throw InputError("solid " + std::to_string(solid) + ": " + std::to_string(bad) +
-                     " hexahedra would be inverted or degenerate (source " + face_name(caps.source) + ")");
+                     " hexahedra would be inverted or degenerate (source " +
+                     (closed ? std::string("its profile") : face_name(caps.source)) + ")");
   }
   record.hex_count = static_cast<std::int64_t>(out.hexes.size()) - record.first_hex;
   out.solids.push_back(record);
@@ -547,16 +545,18 @@ SweepResult sweep_shape(const TopoDS_Shape& shape, const SweepOptions& options) 
     if (options.source >= 0 && !holds_given) for_solid.source = for_solid.target = -1;
     SolidCaps caps;
     std::string refusal;
+    std::optional<SolidFaces> faces;  // read once for both searches below
     try {
-      caps = find_caps(index, solid_faces, for_solid, tol);
+      faces.emplace(index, solid_faces);
+      caps = find_caps(index, *faces, for_solid, tol);
     } catch (const Standard_Failure& e) {
       caps.why_not = std::string("OpenCASCADE failed on its faces (") +
                      (e.GetMessageString() ? e.GetMessageString() : "no message") + ")";
     }
-    if (caps.source < 0 && !holds_given) {
+    if (caps.source < 0 && !holds_given && faces) {
       // Not capped: perhaps a full turn about an axis.
       try {
-        SolidCaps turn = full_revolution(index, solids(k), SolidFaces(index, solid_faces), tol, diagonal);
+        SolidCaps turn = full_revolution(index, solids(k), *faces, tol, diagonal);
         if (!turn.profile.IsNull()) {
           caps = turn;
         } else {
