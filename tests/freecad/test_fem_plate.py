@@ -24,6 +24,7 @@ import unittest
 import FreeCAD
 import Part
 
+from fem_setup import steel_analysis
 from refused_face import drilled_cone_face
 
 WIDTH, HOLE_D, THICKNESS, FORCE = 60.0, 20.0, 1.0, 1000.0
@@ -66,17 +67,8 @@ class PlateWithHoleTest(unittest.TestCase):
         right = _edge_name(plate, lambda e: e.BoundBox.XMin > 100 - 1e-6)
         bottom = _edge_name(plate, lambda e: e.BoundBox.YMax < 1e-6)
 
-        analysis = ObjectsFem.makeAnalysis(self.doc, "Analysis")
-        solver = ObjectsFem.makeSolverCalculixCcxTools(self.doc, "CalculiX")
-        solver.AnalysisType = "static"
-        solver.GeometricalNonlinearity = "linear"
-        analysis.addObject(solver)
+        analysis, solver = steel_analysis(self.doc)
         analysis.addObject(ObjectsFem.makeElementGeometry2D(self.doc, THICKNESS, "Thickness"))
-        material = ObjectsFem.makeMaterialSolid(self.doc, "Steel")
-        values = material.Material
-        values.update({"Name": "Steel", "YoungsModulus": "210000 MPa", "PoissonRatio": "0.30"})
-        material.Material = values
-        analysis.addObject(material)
         fixed = ObjectsFem.makeConstraintFixed(self.doc, "Fixed")
         fixed.References = [(plate, left)]
         analysis.addObject(fixed)

@@ -16,6 +16,8 @@ import unittest
 
 import FreeCAD
 
+from fem_setup import steel_analysis
+
 LENGTH, SIDE, YOUNG, POISSON, FORCE = 100.0, 10.0, 210000.0, 0.3, 100.0
 INERTIA, AREA = SIDE ** 4 / 12, SIDE * SIDE
 SHEAR = YOUNG / (2 * (1 + POISSON))
@@ -54,16 +56,7 @@ class SweptCantileverTest(unittest.TestCase):
         vertical = [f"Edge{i + 1}" for i, e in enumerate(bar.Shape.Edges)
                     if e.BoundBox.XLength < 1e-6 and e.BoundBox.YLength < 1e-6][0]
 
-        analysis = ObjectsFem.makeAnalysis(self.doc, "Analysis")
-        solver = ObjectsFem.makeSolverCalculixCcxTools(self.doc, "CalculiX")
-        solver.AnalysisType = "static"
-        solver.GeometricalNonlinearity = "linear"
-        analysis.addObject(solver)
-        material = ObjectsFem.makeMaterialSolid(self.doc, "Steel")
-        values = material.Material
-        values.update({"Name": "Steel", "YoungsModulus": "210000 MPa", "PoissonRatio": "0.30"})
-        material.Material = values
-        analysis.addObject(material)
+        analysis, solver = steel_analysis(self.doc)
         fixed = ObjectsFem.makeConstraintFixed(self.doc, "Fixed")
         fixed.References = [(bar, clamped)]
         analysis.addObject(fixed)
