@@ -63,7 +63,9 @@ int run(const SweepCommand& command, std::ostream& out, std::ostream& err) {
     for (const SweptSolid& s : result.mesh.solids) {
       nlohmann::ordered_json row = {{"solid", s.solid},   {"source", s.source}, {"target", s.target},
                                     {"layers", s.layers}, {"height", s.height}, {"hexes", s.hex_count}};
-      if (s.rotation) {
+      if (s.projected) {
+        row["projection"] = "least squares";
+      } else if (s.rotation) {
         row["rotation"] = {{"point", {s.point.x, s.point.y, s.point.z}},
                            {"direction", {s.vector.x, s.vector.y, s.vector.z}},
                            {"angle", s.angle}};

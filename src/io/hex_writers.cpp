@@ -228,7 +228,9 @@ void write_hex_json(std::ostream& out, const HexMesh& mesh) {
       append_double(text, v.z);
       text += "]";
     };
-    if (s.rotation) {
+    if (s.projected) {
+      text += ", \"projection\": \"least squares\"";
+    } else if (s.rotation) {
       text += ", \"rotation\": {\"point\": ";
       vec(s.point);
       text += ", \"direction\": ";

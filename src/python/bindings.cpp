@@ -354,7 +354,9 @@ py::dict sweep_shape_binding(const std::string& brep_text_or_path, double size, 
     d["height"] = s.height;
     d["first_hex"] = s.first_hex;
     d["hex_count"] = s.hex_count;
-    if (s.rotation) {
+    if (s.projected) {
+      d["projection"] = "least squares";
+    } else if (s.rotation) {
       py::dict turn;
       turn["point"] = py::make_tuple(s.point.x, s.point.y, s.point.z);
       turn["direction"] = py::make_tuple(s.vector.x, s.vector.y, s.vector.z);

@@ -91,7 +91,7 @@ TEST_F(Sweep, WhatCannotBeSweptIsRefusedAndNothingWritten) {
   const RunResult caps = run_tquad({"sweep", shapes + "/cylinder.brep", "-o", path("c.inp"), "--source", "0",
                                     "--target", "1"});
   EXPECT_EQ(caps.exit_status, 2);
-  EXPECT_NE(caps.err.find("face 0 and face 1 are not the caps of an extrusion"), std::string::npos) << caps.err;
+  EXPECT_NE(caps.err.find("face 0 and face 1 are not the caps of a sweep"), std::string::npos) << caps.err;
   const RunResult stl = run_tquad({"sweep", shapes + "/cylinder.brep", "-o", path("c.stl")});
   EXPECT_EQ(stl.exit_status, 2);
   EXPECT_NE(stl.err.find(".inp, .vtu, .msh or .json"), std::string::npos) << stl.err;

@@ -5,6 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepOffsetAPI_MakePipe.hxx>
+#include <BRepOffsetAPI_ThruSections.hxx>
+#include <BRepPrimAPI_MakeWedge.hxx>
+#include <GeomAPI_PointsToBSpline.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <TColgp_Array1OfPnt.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
@@ -202,7 +211,7 @@ TEST(Sweep, SolidsThatAreNotExtrusionsAreRefusedWithTheReason) {
     sweep_shape(sphere, options);
     FAIL() << "a sphere swept";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("solid 0 is not an extrusion"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("solid 0 is not sweepable"), std::string::npos) << e.what();
   }
   // A box with a corner scooped out by a ball: no direction has caps and straight sides.
   const TopoDS_Shape box = BRepPrimAPI_MakeBox(10, 10, 10).Shape();
@@ -211,7 +220,7 @@ TEST(Sweep, SolidsThatAreNotExtrusionsAreRefusedWithTheReason) {
     sweep_shape(cut, options);
     FAIL() << "a box with a scooped corner swept";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("is not an extrusion"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("is not sweepable"), std::string::npos) << e.what();
   }
   // With keep_going the extrusion beside them is swept, and they are listed.
   TopoDS_Compound both;
@@ -228,7 +237,7 @@ TEST(Sweep, SolidsThatAreNotExtrusionsAreRefusedWithTheReason) {
   EXPECT_EQ(r.mesh.solids[0].solid, 1);
   ASSERT_EQ(r.mesh.refused.size(), 1u);
   EXPECT_EQ(r.mesh.refused[0].solid, 0);
-  EXPECT_NE(r.mesh.refused[0].reason.find("not an extrusion"), std::string::npos) << r.mesh.refused[0].reason;
+  EXPECT_NE(r.mesh.refused[0].reason.find("not sweepable"), std::string::npos) << r.mesh.refused[0].reason;
   for (double sj : r.mesh.scaled_jacobian) EXPECT_GT(sj, 1e-6);
   // Only the sphere: nothing swept is an error, keep_going or not.
   EXPECT_THROW(sweep_shape(sphere, options), InputError);
@@ -376,6 +385,125 @@ TEST(Sweep, AFullRevolutionIsItsProfileTurnedAllTheWayRound) {
   for (const auto& [face, nodes] : r.mesh.face_nodes) {
     EXPECT_EQ(nodes.size() % s.layers, 0u) << "face " << face;
     EXPECT_GE(nodes.size(), 2u * s.layers) << "face " << face;
+  }
+}
+
+// Lofts and pipes: the general route (projected_sweep.h).
+
+// A square of side `side` centred on the z axis at height z, turned by `degrees`.
+TopoDS_Wire square(double side, double z, double degrees) {
+  BRepBuilderAPI_MakePolygon polygon;
+  const double a = degrees * M_PI / 180, h = side / 2;
+  const double corners[4][2] = {{-h, -h}, {h, -h}, {h, h}, {-h, h}};
+  for (const auto& c : corners) {
+    polygon.Add(gp_Pnt(c[0] * std::cos(a) - c[1] * std::sin(a), c[0] * std::sin(a) + c[1] * std::cos(a), z));
+  }
+  polygon.Close();
+  return polygon.Wire();
+}
+
+TopoDS_Shape loft(const TopoDS_Wire& bottom, const TopoDS_Wire& top, bool ruled) {
+  BRepOffsetAPI_ThruSections sections(true, ruled);
+  sections.AddWire(bottom);
+  sections.AddWire(top);
+  sections.Build();
+  return sections.Shape();
+}
+
+double diagonal_of(const TopoDS_Shape& shape) {
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box);
+  return std::sqrt(box.SquareExtent());
+}
+
+// One solid swept by the general route at D / 50: no hexahedron inverted, the boundary
+// conforming, the volume within 1% of the solid's, the target's nodes on its face.
+SweepResult expect_projected_sweep(const TopoDS_Shape& shape, int order = 1) {
+  SweepOptions options;
+  options.face.size = diagonal_of(shape) / 50;
+  options.face.order = order;
+  const SweepResult r = sweep_shape(shape, options);
+  EXPECT_EQ(r.mesh.solids.size(), 1u);
+  if (r.mesh.solids.size() != 1) return r;
+  const SweptSolid& s = r.mesh.solids[0];
+  EXPECT_TRUE(s.projected);
+  EXPECT_GE(s.layers, 1);
+  for (double sj : r.mesh.scaled_jacobian) EXPECT_GT(sj, 1e-6);
+  for (double ratio : r.mesh.jacobian_ratio) EXPECT_GT(ratio, 1e-6);
+  expect_conforming(r.mesh);
+  EXPECT_NEAR(hexes_volume(r.mesh, s), volume_of(shape), 0.01 * volume_of(shape));
+  const ShapeIndex index(shape);
+  const double tol = 1e-6 * diagonal_of(shape);
+  for (const auto& [face, nodes] : r.mesh.face_nodes) {
+    if (face != s.target && face != s.source) continue;
+    for (std::size_t k = 0; k < nodes.size(); k += 7) {
+      const Vec3& p = r.mesh.nodes[nodes[k]];
+      BRepExtrema_DistShapeShape d(BRepBuilderAPI_MakeVertex(gp_Pnt(p.x, p.y, p.z)).Vertex(), index.face(face));
+      EXPECT_LE(d.Value(), tol) << "a node of cap face " << face;
+    }
+  }
+  return r;
+}
+
+TEST(Sweep, TwistedAndScaledLoftsAreSweptByProjection) {
+  for (const bool ruled : {true, false}) {
+    for (const double turn : {0.0, 30.0, 60.0}) {
+      SCOPED_TRACE(std::string(ruled ? "ruled" : "smooth") + " loft turned " + std::to_string(turn));
+      expect_projected_sweep(loft(square(20, 0, 0), square(12, 20, turn), ruled));
+    }
+  }
+  // Circles of two radii, off axis: a slanted truncated cone.
+  const gp_Circ bottom(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 10);
+  const gp_Circ top(gp_Ax2(gp_Pnt(4, 0, 15), gp_Dir(0, 0, 1)), 5);
+  const auto circle_wire = [](const gp_Circ& c) { return BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(c).Edge()).Wire(); };
+  SCOPED_TRACE("slanted cone");
+  expect_projected_sweep(loft(circle_wire(bottom), circle_wire(top), true), 2);
+}
+
+TEST(Sweep, ALoftWithAHoleThroughItKeepsTheHole) {
+  const TopoDS_Shape tapered = loft(square(20, 0, 0), square(16, 20, 20), true);
+  const TopoDS_Shape holed =
+      BRepAlgoAPI_Cut(tapered, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -5), gp_Dir(0, 0, 1)), 3, 30).Shape()).Shape();
+  const SweepResult r = expect_projected_sweep(holed);
+  ASSERT_EQ(r.mesh.face_nodes.size(), 7u);  // 2 caps, 4 sides, the hole's wall
+}
+
+TEST(Sweep, APipeAlongACurveIsSweptByProjection) {
+  TColgp_Array1OfPnt through(1, 4);
+  through(1) = gp_Pnt(0, 0, 0);
+  through(2) = gp_Pnt(2, 0, 15);
+  through(3) = gp_Pnt(10, 0, 30);
+  through(4) = gp_Pnt(25, 0, 38);
+  const Handle(Geom_BSplineCurve) path = GeomAPI_PointsToBSpline(through).Curve();
+  const TopoDS_Wire spine = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(path).Edge()).Wire();
+  const TopoDS_Face profile = BRepBuilderAPI_MakeFace(square(6, 0, 0)).Face();
+  BRepOffsetAPI_MakePipe pipe(spine, profile);
+  pipe.Build();
+  ASSERT_TRUE(pipe.IsDone());
+  expect_projected_sweep(pipe.Shape());
+}
+
+TEST(Sweep, SidesThatAreNotFourSidedOrStackedAreNamed) {
+  // A pyramid's sides are triangles.
+  const TopoDS_Shape pyramid = BRepPrimAPI_MakeWedge(10, 10, 10, 5, 5, 5, 5).Shape();
+  SweepOptions options;
+  try {
+    sweep_shape(pyramid, options);
+    FAIL() << "a pyramid swept";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("faces that are not four-sided"), std::string::npos) << e.what();
+  }
+  // A loft's side split half-way along the sweep (two lofts glued): refused, naming a side.
+  BRepOffsetAPI_ThruSections three(true, true);
+  three.AddWire(square(20, 0, 0));
+  three.AddWire(square(16, 10, 10));
+  three.AddWire(square(12, 20, 20));
+  three.Build();
+  try {
+    sweep_shape(three.Shape(), options);
+    FAIL() << "a stacked loft swept";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("side face"), std::string::npos) << e.what();
   }
 }
 

@@ -24,8 +24,11 @@ struct SweptSolid {
   int layers = 0;            // hexahedra from source to target
   double height = 0.0;       // the longest path of a source node
   // The motion from source to target: a translation by `vector`, or a rotation by
-  // `angle` (radians, right-handed) about the axis through `point` along `vector`.
+  // `angle` (radians, right-handed) about the axis through `point` along `vector`;
+  // or, `projected`, no exact motion: layers placed by the general route
+  // (occ/sweep/projected_sweep.h), vector, point and angle unused.
   bool rotation = false;
+  bool projected = false;
   Vec3 vector, point;
   double angle = 0.0;
   std::int64_t first_hex = 0, hex_count = 0;

@@ -21,6 +21,8 @@
 #include <gp_Vec.hxx>
 
 #include <algorithm>
+#include <functional>
+#include <memory>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -29,6 +31,7 @@
 #include "core/input_error.h"
 #include "occ/model/occ_vec.h"
 #include "occ/model/shape_index.h"
+#include "occ/sweep/projected_sweep.h"
 
 namespace tquad {
 
@@ -86,11 +89,6 @@ struct SweepMotion {
     return out;
   }
   gp_Pnt at(const gp_Pnt& p, double f) const { return p.Transformed(part(f)); }
-  // The direction p moves in at the start.
-  gp_Vec direction(const gp_Pnt& p) const {
-    if (!rotation) return d;
-    return gp_Vec(axis.Direction()).Crossed(gp_Vec(axis.Location(), p)) * (angle > 0 ? 1.0 : -1.0);
-  }
   // The path length of p from source to target.
   double length(const gp_Pnt& p) const {
     if (!rotation) return d.Magnitude();
@@ -212,6 +210,7 @@ struct SolidCaps {
   SweepMotion motion;
   std::string why_not;  // when none: the first reason met
   TopoDS_Shape profile;  // a full turn's source: the solid's section by a half-plane
+  std::optional<ProjectedCaps> projected;  // no exact motion: the general route's sides
 };
 
 // The caps of the solid: the pair given, or the valid pair whose source has the most
@@ -355,20 +354,9 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
       if (compact.emplace(n, static_cast<NodeId>(base.size())).second) base.push_back(source.mesh.nodes[n]);
     }
   }
-  const SweepMotion& motion = caps.motion;
-  // The layers: the longest path over the size, and for a revolution at most 45
-  // degrees a layer (the rule curved edges follow, edge_discretization.h).
-  double height = 0.0;
-  for (const Vec3& p : base) height = std::max(height, motion.length(gp_Pnt(p.x, p.y, p.z)));
-  int layers = std::max(1, static_cast<int>(std::lround(height / size)));
-  if (motion.rotation) layers = std::max(layers, static_cast<int>(std::ceil(std::abs(motion.angle) / (M_PI / 4) - 1e-9)));
-  if (options.layers > 0) layers = options.layers;
-  if (closed && layers < 3) layers = 3;  // fewer would join a layer to itself
-  const int stored = closed ? layers : layers + 1;  // a full turn's last layer is its first
-  const long long count = static_cast<long long>(base.size());
-  // Second order: the source's edge middles (on its surface and curves) moved to every
-  // layer, and a middle on each node's path between layers (on the side surface: the
-  // path is the motion's own).
+  // Second order: the source's edge middles (on its surface and curves) go through
+  // the layers as the corners do, and each corner's path between two layers gets a
+  // middle (on the side surfaces: the path is the route's own).
   const bool second = source.mesh.second_order();
   std::map<std::pair<NodeId, NodeId>, NodeId> middle_of;  // source corner pair -> source middle
   std::map<NodeId, NodeId> compact_middle;
@@ -385,23 +373,79 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
       }
     }
   }
+  // The source's boundary: corners and middles on edges of one quad only.
+  std::map<std::pair<NodeId, NodeId>, int> uses;
+  for (const Quad& q : source.mesh.quads) {
+    for (int i = 0; i < 4; ++i) ++uses[std::minmax(q[i], q[(i + 1) % 4])];
+  }
+  std::set<NodeId> rim_corners, rim_middles;
+  for (const auto& [edge, n] : uses) {
+    if (n != 1) continue;
+    rim_corners.insert(edge.first);
+    rim_corners.insert(edge.second);
+    if (second) rim_middles.insert(middle_of.at(edge));
+  }
+  const long long count = static_cast<long long>(base.size());
   const long long middles = static_cast<long long>(base_middles.size());
+  // Where the route puts the first n source points (corners, then middles) at the
+  // fraction f of the sweep.
+  std::vector<Vec3> points = base;
+  points.insert(points.end(), base_middles.begin(), base_middles.end());
+  std::function<std::vector<Vec3>(double, std::size_t)> place;
+  double height = 0.0;
+  int fewest_layers = 1;
+  const SweepMotion& motion = caps.motion;
+  if (caps.projected) {
+    std::vector<bool> rim(points.size(), false);
+    for (NodeId n : rim_corners) rim[compact.at(n)] = true;
+    for (NodeId n : rim_middles) rim[count + compact_middle.at(n)] = true;
+    auto paths = std::make_shared<const ProjectedPaths>(index, *caps.projected, points, rim, tol);
+    height = paths->height();
+    place = [paths](double f, std::size_t n) {
+      std::vector<Vec3> all = paths->at(f);
+      all.resize(n);
+      return all;
+    };
+  } else {
+    for (const Vec3& p : base) height = std::max(height, motion.length(gp_Pnt(p.x, p.y, p.z)));
+    // A revolution: at most 45 degrees a layer (the rule curved edges follow,
+    // edge_discretization.h).
+    if (motion.rotation) fewest_layers = static_cast<int>(std::ceil(std::abs(motion.angle) / (M_PI / 4) - 1e-9));
+    place = [&points, &motion](double f, std::size_t n) {
+      std::vector<Vec3> moved(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(n));
+      if (f == 0) return moved;
+      const gp_Trsf move = motion.part(f);
+      for (Vec3& p : moved) p = to_vec3(gp_Pnt(p.x, p.y, p.z).Transformed(move));
+      return moved;
+    };
+  }
+  // The layers: the longest path over the size.
+  int layers = std::max({1, fewest_layers, static_cast<int>(std::lround(height / size))});
+  if (options.layers > 0) layers = options.layers;
+  if (closed && layers < 3) layers = 3;  // fewer would join a layer to itself
+  const int stored = closed ? layers : layers + 1;  // a full turn's last layer is its first
   const auto offset = static_cast<long long>(out.nodes.size());
   if ((count + middles) * stored + (second ? count * layers : 0) > static_cast<long long>(INT32_MAX) - offset) {
     throw InputError("solid " + std::to_string(solid) + ": the sweep would have over 2^31 nodes; use fewer layers or a larger size");
   }
-  // `points` moved by the fraction f of the motion, appended to the mesh's nodes.
-  const auto add_moved = [&](const std::vector<Vec3>& points, double f) {
-    const gp_Trsf move = motion.part(f);
-    for (const Vec3& p : points) out.nodes.push_back(f == 0 ? p : to_vec3(gp_Pnt(p.x, p.y, p.z).Transformed(move)));
-  };
-  for (int k = 0; k < stored; ++k) add_moved(base, static_cast<double>(k) / layers);
+  // The nodes: every layer's corners, then every layer's middles, then the middles on
+  // the paths between layers.
+  std::vector<Vec3> layer_middles;
+  for (int k = 0; k < stored; ++k) {
+    const std::vector<Vec3> moved = place(static_cast<double>(k) / layers, points.size());
+    out.nodes.insert(out.nodes.end(), moved.begin(), moved.begin() + count);
+    layer_middles.insert(layer_middles.end(), moved.begin() + count, moved.end());
+  }
   const auto layer = [&](int k) { return k % stored; };
   const auto at = [&](NodeId n, int k) { return static_cast<NodeId>(offset + layer(k) * count + compact.at(n)); };
   const auto plane_offset = static_cast<long long>(out.nodes.size());
-  for (int k = 0; k < stored && second; ++k) add_moved(base_middles, static_cast<double>(k) / layers);
+  out.nodes.insert(out.nodes.end(), layer_middles.begin(), layer_middles.end());
+  layer_middles = std::vector<Vec3>();
   const auto path_offset = static_cast<long long>(out.nodes.size());
-  for (int k = 0; k < layers && second; ++k) add_moved(base, (k + 0.5) / layers);
+  for (int k = 0; k < layers && second; ++k) {
+    const std::vector<Vec3> moved = place((k + 0.5) / layers, static_cast<std::size_t>(count));
+    out.nodes.insert(out.nodes.end(), moved.begin(), moved.end());
+  }
   const auto plane_middle = [&](NodeId a, NodeId b, int k) {
     return static_cast<NodeId>(plane_offset + layer(k) * middles + compact_middle.at(middle_of.at(std::minmax(a, b))));
   };
@@ -412,7 +456,8 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
   record.target = caps.target;
   record.layers = layers;
   record.height = height;
-  record.rotation = motion.rotation;
+  record.projected = caps.projected.has_value();
+  record.rotation = motion.rotation && !record.projected;
   record.vector = motion.rotation ? to_vec3(gp_Vec(motion.axis.Direction())) : to_vec3(motion.d);
   record.point = motion.rotation ? to_vec3(motion.axis.Location()) : Vec3{};
   record.angle = motion.angle;
@@ -421,9 +466,9 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
   for (const Quad& q : source.mesh.quads) {
     const Vec3 normal = cross(source.mesh.nodes[q[2]] - source.mesh.nodes[q[0]],
                               source.mesh.nodes[q[3]] - source.mesh.nodes[q[1]]);
-    const Vec3 middle = 0.25 * (source.mesh.nodes[q[0]] + source.mesh.nodes[q[1]] + source.mesh.nodes[q[2]] +
-                                source.mesh.nodes[q[3]]);
-    const Vec3 along = to_vec3(motion.direction(gp_Pnt(middle.x, middle.y, middle.z)));
+    // The way the quad moves into the first layer (its corners' mean step).
+    Vec3 along{0, 0, 0};
+    for (NodeId n : q) along += out.nodes[at(n, 1)] - out.nodes[at(n, 0)];
     const Quad bottom = dot(normal, along) > 0 ? q : Quad{q[0], q[3], q[2], q[1]};
     for (int k = 0; k < layers; ++k) {
       Hex h;
@@ -474,18 +519,6 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
     }
     out.face_nodes.emplace_back(caps.source, source_nodes);
     out.face_nodes.emplace_back(caps.target, target_nodes);
-  }
-  // The source's boundary: corners and middles on edges of one quad only.
-  std::map<std::pair<NodeId, NodeId>, int> uses;
-  for (const Quad& q : source.mesh.quads) {
-    for (int i = 0; i < 4; ++i) ++uses[std::minmax(q[i], q[(i + 1) % 4])];
-  }
-  std::set<NodeId> rim_corners, rim_middles;
-  for (const auto& [edge, n] : uses) {
-    if (n != 1) continue;
-    rim_corners.insert(edge.first);
-    rim_corners.insert(edge.second);
-    if (second) rim_middles.insert(middle_of.at(edge));
   }
   for (int f : solid_faces) {
     if (f == caps.source || f == caps.target) continue;
@@ -566,12 +599,27 @@ SweepResult sweep_shape(const TopoDS_Shape& shape, const SweepOptions& options) 
         caps.why_not += "; nor a full revolution: OpenCASCADE failed on its section";
       }
     }
+    if (caps.source < 0 && caps.profile.IsNull() && faces) {
+      // No exact motion: perhaps a one-to-one sweep between caps of any shape.
+      try {
+        ProjectedCaps general = find_projected_caps(index, solid_faces, for_solid.source, for_solid.target);
+        if (general.source >= 0) {
+          caps.source = general.source;
+          caps.target = general.target;
+          caps.projected = std::move(general);
+        } else {
+          caps.why_not += "; nor a one-to-one sweep: " + general.why_not;
+        }
+      } catch (const Standard_Failure&) {
+        caps.why_not += "; nor a one-to-one sweep: OpenCASCADE failed on its faces";
+      }
+    }
     if (caps.source < 0 && caps.profile.IsNull()) {
       if (holds_given) {
         throw InputError(face_name(options.source) + " and " + face_name(options.target) +
-                         " are not the caps of an extrusion or a revolution: " + caps.why_not);
+                         " are not the caps of a sweep: " + caps.why_not);
       }
-      refusal = "solid " + std::to_string(solid) + " is not an extrusion or a revolution: " + caps.why_not;
+      refusal = "solid " + std::to_string(solid) + " is not sweepable: " + caps.why_not;
     } else {
       given_used = given_used || holds_given;
       // A refused solid leaves nothing in the mesh.

@@ -1,21 +1,25 @@
 // sweep_shape: hexahedra by sweeping a source face's quad mesh through a solid.
 //
-// A solid is swept when it is an extrusion or a partial revolution: two planar faces
-// of it (the caps, source and target) are the same face moved by a vector d not in
-// their plane, or turned by an angle under a full turn about an axis (the axis of a
-// side face's circular edge); and every other face is a side face running from
-// source to target in one piece: each of its edges lies on a cap or is the path of a
-// point (a straight segment equal to d, or an arc of that angle about the axis), so
-// there are as many side faces as source edges. The source face is meshed by the face
-// mesher (mesh_shape, its options); the target gets the same quads moved, not a mesh
-// of its own; the layers are the source's nodes moved by k / N of the motion (the
-// exact transform). An extrusion's hexahedron is its quad's prism, its scaled Jacobian
-// the quad's times the sine of d's angle to the cap.
+// Each solid goes by the first route that fits it:
+// - an extrusion or a partial revolution: two planar faces of it (the caps, source
+//   and target) are the same face moved by a vector d not in their plane, or turned by
+//   an angle under a full turn about an axis (the axis of a side face's circular
+//   edge); every other face runs from source to target in one piece, each of its
+//   edges on a cap or the path of a point (a straight segment equal to d, or an arc of
+//   that angle about the axis). The layers are the source's nodes moved by k / N of
+//   the motion (the exact transform);
+// - a full revolution: every face turns about one axis; the solid's section by a
+//   half-plane through it is the source, and the last layer is the first;
+// - a one-to-one sweep (projected_sweep.h): two caps of any shape joined by side
+//   faces that are each four-sided along the sweep (lofts, twisted or scaled; pipes
+//   along curves); the layers are placed by least-squares projection.
+// The source is meshed by the face mesher (mesh_shape, its options); the target gets
+// the same quads moved, not a mesh of its own. Every hexahedron is checked (corners,
+// and at second order its 27 integration points): a solid with one inverted is refused.
 //
 // Refused, with the reason and the faces: a revolution's profile touching its axis
-// (wedges); full revolutions (no caps), sweeps along curves and lofts; side faces
-// split along the sweep; caps that are not planar. Solids are swept one by one:
-// solids sharing a face do not share its nodes.
+// (wedges); side faces stacked along the sweep; sides that are not four-sided.
+// Solids are swept one by one: solids sharing a face do not share its nodes.
 #pragma once
 
 #include "core/mesh/hex_mesh.h"
