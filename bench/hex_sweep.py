@@ -192,8 +192,10 @@ def part_job(part, args, work):
     row["volume"] = float(volume.sum())
     cases = []
     for s in mesh["solids"]:
-        if s["source"] < 0:  # a full revolution: its source is a section, no face of the part
-            cases.append({"skip": "a full revolution (its source is a section, not a face)"})
+        if s["source"] < 0 or "projection" in s:
+            # A full revolution's source is a section, not a face of the part; a
+            # one-to-one sweep has no exact motion for Gmsh's extrusion.
+            cases.append({"skip": "a full revolution" if s["source"] < 0 else "a one-to-one sweep"})
             s["min"] = float(sj[s["first_hex"]:s["first_hex"] + s["hex_count"]].min())
             continue
         nodes = np.array(mesh["face_nodes"][str(s["source"])], dtype=np.int64)
@@ -207,12 +209,19 @@ def part_job(part, args, work):
         first_hex, count = s["first_hex"], s["hex_count"]
         s["min"] = float(sj[first_hex:first_hex + count].min())
     row["per_solid"] = [{"solid": s["solid"], "layers": s["layers"], "hexes": s["hex_count"], "min": s["min"],
-                         "motion": ("full revolution" if s["source"] < 0 else "rotation") if "rotation" in s
-                         else "translation"} for s in mesh["solids"]]
+                         "motion": motion_of(s)} for s in mesh["solids"]]
     if not args.no_gmsh and cases:
         row["gmsh"] = run_gmsh(part["path"], cases, size, args.timeout)
     os.remove(out)
     return row
+
+
+def motion_of(solid):
+    if "projection" in solid:
+        return "one-to-one projection"
+    if "rotation" in solid:
+        return "full revolution" if solid["source"] < 0 else "rotation"
+    return "translation"
 
 
 def refusal_reasons(run):
@@ -222,10 +231,14 @@ def refusal_reasons(run):
 
 
 def reason_class(reason):
-    """A refusal's reason without its face and edge numbers: why no caps were found, and
-    why it is not a full revolution either."""
-    caps, _, turn = reason.partition("; nor a full revolution: ")
-    return caps_class(caps) + ("; not a full revolution: " + caps_class(turn) if turn else "")
+    """A refusal's reason without its face and edge numbers: why no exact motion was
+    found, why it is not a full revolution, and why not a one-to-one sweep."""
+    parts = reason.split("; nor ")
+    labels = [caps_class(parts[0])]
+    for part in parts[1:]:
+        route, _, why = part.partition(": ")
+        labels.append("not " + route + ": " + caps_class(why))
+    return "; ".join(labels)
 
 
 def caps_class(reason):
@@ -243,7 +256,14 @@ def caps_class(reason):
                        ("inverted or degenerate", "hexahedra would be inverted"),
                        ("does not turn about the axis", "a face does not turn about the axis"),
                        ("no circular edge gives an axis", "no circular edge"),
-                       ("section by a half-plane", "its half-plane section is not one face")):
+                       ("section by a half-plane", "its half-plane section is not one face"),
+                       ("that are not four-sided", "over two faces are not four-sided"),
+                       ("is not four-sided along the sweep", "a side is not four-sided"),
+                       ("does not run from an edge", "a side does not reach the target (stacked sides)"),
+                       ("share edge", "the caps share an edge"),
+                       ("different numbers of edges", "the caps' edge counts differ"),
+                       ("have no side face", "a source edge has no side face"),
+                       ("lies on none of its edges", "a source boundary node off its edges")):
         if key in text:
             return label
     return text[:80]

@@ -11,6 +11,7 @@
 #include <BRepOffsetAPI_MakePipe.hxx>
 #include <BRepOffsetAPI_ThruSections.hxx>
 #include <BRepPrimAPI_MakeWedge.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <GeomAPI_PointsToBSpline.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <TColgp_Array1OfPnt.hxx>
@@ -493,18 +494,30 @@ TEST(Sweep, SidesThatAreNotFourSidedOrStackedAreNamed) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("faces that are not four-sided"), std::string::npos) << e.what();
   }
-  // A loft's side split half-way along the sweep (two lofts glued): refused, naming a side.
+}
+
+TEST(Sweep, SidesStackedAlongTheSweepGetTheirShareOfTheLayers) {
+  // A loft through three squares: each side is two faces, one above the other.
   BRepOffsetAPI_ThruSections three(true, true);
   three.AddWire(square(20, 0, 0));
   three.AddWire(square(16, 10, 10));
-  three.AddWire(square(12, 20, 20));
+  three.AddWire(square(12, 30, 20));
   three.Build();
-  try {
-    sweep_shape(three.Shape(), options);
-    FAIL() << "a stacked loft swept";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("side face"), std::string::npos) << e.what();
-  }
+  const SweepResult r = expect_projected_sweep(three.Shape());
+  ASSERT_EQ(r.mesh.solids.size(), 1u);
+  const SweptSolid& s = r.mesh.solids[0];
+  EXPECT_EQ(r.mesh.face_nodes.size(), 10u);  // 2 caps, 8 sides
+  // The upper sides are twice as long: about two thirds of the layers.
+  EXPECT_GE(s.layers, 3);
+  // A plate with a countersunk hole: the hole's wall is a cone above a cylinder, the
+  // outer sides one face each.
+  const TopoDS_Shape plate = BRepPrimAPI_MakeBox(gp_Pnt(-20, -20, 0), 40, 40, 10).Shape();
+  const TopoDS_Shape bore = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -1), gp_Dir(0, 0, 1)), 4, 12).Shape();
+  const TopoDS_Shape sink = BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(0, 0, 6), gp_Dir(0, 0, 1)), 4, 8, 4).Shape();
+  const TopoDS_Shape countersunk = BRepAlgoAPI_Cut(BRepAlgoAPI_Cut(plate, bore).Shape(), sink).Shape();
+  SCOPED_TRACE("countersunk plate");
+  const SweepResult c = expect_projected_sweep(countersunk);
+  ASSERT_EQ(c.mesh.face_nodes.size(), 8u);  // 2 caps, 4 sides, the bore and the cone
 }
 
 TEST(Sweep, HexahedronMeasures) {

@@ -16,6 +16,7 @@
 #include <gp_Pnt2d.hxx>
 
 #include <algorithm>
+#include <functional>
 #include <limits>
 #include <map>
 #include <set>
@@ -61,8 +62,9 @@ FaceEdges face_edges(const ShapeIndex& index, int f) {
 
 bool four_sided(const FaceEdges& f) { return f.wires == 1 && f.loop.size() == 4 && !f.degenerate; }
 
-// Why s and t are not the caps of a one-to-one sweep, or "" with the sides filled.
-std::string check_pair(const std::map<int, FaceEdges>& faces, int s, int t, std::vector<ProjectedSide>& sides) {
+// Why s and t are not the caps of a one-to-one sweep, or "" with the columns filled.
+std::string check_pair(const ShapeIndex& index, const std::map<int, FaceEdges>& faces, int s, int t,
+                       std::vector<ProjectedColumn>& columns, int& groups) {
   const FaceEdges& source = faces.at(s);
   const FaceEdges& target = faces.at(t);
   for (int e : source.ids) {
@@ -72,52 +74,100 @@ std::string check_pair(const std::map<int, FaceEdges>& faces, int s, int t, std:
     return face_name(s) + " and " + face_name(t) + " have different numbers of edges (" +
            std::to_string(source.ids.size()) + " and " + std::to_string(target.ids.size()) + ")";
   }
-  sides.clear();
-  std::set<int> used_source, used_target;
+  // The side faces on each edge (a side of the solid is on two faces).
+  std::map<int, std::vector<int>> faces_on;
   for (const auto& [f, edges] : faces) {
     if (f == s || f == t) continue;
-    if (!four_sided(edges)) {
-      return "side " + face_name(f) + " is not four-sided along the sweep (" +
-             (edges.wires != 1 ? std::to_string(edges.wires) + " wires"
-                               : std::to_string(edges.loop.size()) + " edges" +
-                                     (edges.degenerate ? ", one collapsed to a point" : "")) +
-             ")";
+    for (int e : edges.ids) faces_on[e].push_back(f);
+  }
+  columns.clear();
+  std::set<int> used;
+  const auto forward = [](const TopoDS_Edge& e) { return e.Orientation() == TopAbs_FORWARD; };
+  for (int e : source.ids) {
+    ProjectedColumn column;
+    column.source_edge = e;
+    int bottom = e, from = -1;
+    for (;;) {
+      int f = -1;
+      for (int g : faces_on[bottom]) {
+        if (g != from) f = g;
+      }
+      if (f < 0) return "edge " + std::to_string(bottom) + " of the sweep's sides has no side face above it";
+      const FaceEdges& edges = faces.at(f);
+      if (!four_sided(edges)) {
+        return "side " + face_name(f) + " is not four-sided along the sweep (" +
+               (edges.wires != 1 ? std::to_string(edges.wires) + " wires"
+                                 : std::to_string(edges.loop.size()) + " edges" +
+                                       (edges.degenerate ? ", one collapsed to a point" : "")) +
+               ")";
+      }
+      if (!used.insert(f).second) return "side " + face_name(f) + " is met twice going up the sides";
+      const int at = static_cast<int>(std::find(edges.loop_ids.begin(), edges.loop_ids.end(), bottom) -
+                                      edges.loop_ids.begin());
+      const int top = edges.loop_ids[(at + 2) % 4];
+      const auto on_cap = [&](int i) { return source.ids.count(edges.loop_ids[i]) || target.ids.count(edges.loop_ids[i]); };
+      if (on_cap((at + 1) % 4) || on_cap((at + 3) % 4) || source.ids.count(top)) {
+        return "side " + face_name(f) + " does not run from an edge of " + face_name(s) + " to the opposite edge on " +
+               face_name(t);
+      }
+      // The wire runs bottom, the link up from its end, top (backwards), the link down
+      // to its start. The column's bottoms all run one way: a band whose bottom does
+      // not (its wire runs the other way round) has its links swapped.
+      ProjectedBand band;
+      band.face = f;
+      band.bottom = edges.loop[at];
+      band.top = edges.loop[(at + 2) % 4];
+      const TopoDS_Edge& up = edges.loop[(at + 1) % 4];
+      const TopoDS_Edge& down = edges.loop[(at + 3) % 4];
+      const bool swap = !column.bands.empty() && forward(band.bottom) != column.bands.back().top_forward;
+      band.bottom_forward = forward(band.bottom) != swap;
+      band.top_forward = forward(band.top) == swap;
+      band.first_link = swap ? up : down;
+      band.second_link = swap ? down : up;
+      band.first_forward = swap ? forward(up) : !forward(down);
+      band.second_forward = swap ? !forward(down) : forward(up);
+      for (const TopoDS_Edge& link : {band.first_link, band.second_link}) {
+        band.length = std::max(band.length, GCPnts_AbscissaPoint::Length(BRepAdaptor_Curve(link)));
+      }
+      column.bands.push_back(band);
+      if (target.ids.count(top)) break;
+      bottom = top;
+      from = f;
     }
-    int at = -1;
-    for (int i = 0; i < 4; ++i) {
-      if (source.ids.count(edges.loop_ids[i])) {
-        if (at >= 0) return "side " + face_name(f) + " has two edges on the source " + face_name(s);
-        at = i;
+    columns.push_back(column);
+  }
+  if (used.size() + 2 != faces.size()) {
+    for (const auto& [f, edges] : faces) {
+      if (f != s && f != t && !used.count(f)) {
+        return "side " + face_name(f) + " is in no column of sides from " + face_name(s) + " to " + face_name(t);
       }
     }
-    const auto on_cap = [&](int i) { return source.ids.count(edges.loop_ids[i]) || target.ids.count(edges.loop_ids[i]); };
-    if (at < 0 || !target.ids.count(edges.loop_ids[(at + 2) % 4]) || on_cap((at + 1) % 4) || on_cap((at + 3) % 4)) {
-      return "side " + face_name(f) + " does not run from an edge of " + face_name(s) + " to the opposite edge on " +
-             face_name(t);
-    }
-    if (!used_source.insert(edges.loop_ids[at]).second || !used_target.insert(edges.loop_ids[(at + 2) % 4]).second) {
-      return "side " + face_name(f) + " shares its cap edge with another side";
-    }
-    ProjectedSide side;
-    side.face = f;
-    side.source_edge = edges.loop_ids[at];
-    const auto forward = [](const TopoDS_Edge& e) { return e.Orientation() == TopAbs_FORWARD; };
-    side.source = edges.loop[at];
-    side.second_link = edges.loop[(at + 1) % 4];
-    side.target = edges.loop[(at + 2) % 4];
-    side.first_link = edges.loop[(at + 3) % 4];
-    // The wire runs source (first link's end to the second's), second link (source to
-    // target), target (backwards), first link (backwards).
-    side.source_forward = forward(side.source);
-    side.second_forward = forward(side.second_link);
-    side.target_forward = !forward(side.target);
-    side.first_forward = !forward(side.first_link);
-    sides.push_back(side);
   }
-  if (used_source.size() != source.ids.size()) {
-    return std::to_string(source.ids.size() - used_source.size()) + " edges of the source " + face_name(s) +
-           " have no side face";
+  // Groups: columns that share a link (union-find); they must stack alike.
+  std::vector<int> parent(columns.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
+  const std::function<int(int)> root = [&](int i) { return parent[i] == i ? i : parent[i] = root(parent[i]); };
+  std::map<int, int> column_of_link;
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    for (const ProjectedBand& band : columns[c].bands) {
+      for (const TopoDS_Edge& link : {band.first_link, band.second_link}) {
+        const auto [it, fresh] = column_of_link.emplace(index.edge_index(link), static_cast<int>(c));
+        if (!fresh) parent[root(static_cast<int>(c))] = root(it->second);
+      }
+    }
   }
+  std::map<int, int> group_of_root;
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    const int r = root(static_cast<int>(c));
+    const auto [it, fresh] = group_of_root.emplace(r, static_cast<int>(group_of_root.size()));
+    columns[c].group = it->second;
+    if (columns[c].bands.size() != columns[r].bands.size()) {
+      return "the sides above edges " + std::to_string(columns[c].source_edge) + " and " +
+             std::to_string(columns[r].source_edge) + " of " + face_name(s) + " are stacked differently (" +
+             std::to_string(columns[c].bands.size()) + " and " + std::to_string(columns[r].bands.size()) + " faces)";
+    }
+  }
+  groups = static_cast<int>(group_of_root.size());
   return "";
 }
 
@@ -194,8 +244,9 @@ ProjectedCaps find_projected_caps(const ShapeIndex& index, const std::vector<int
   std::tuple<std::size_t, int> best_rank{0, -1};
   int why_depth = -1;
   for (const auto& [s, t] : pairs) {
-    std::vector<ProjectedSide> sides;
-    const std::string why = check_pair(faces, s, t, sides);
+    std::vector<ProjectedColumn> columns;
+    int groups = 0;
+    const std::string why = check_pair(index, faces, s, t, columns, groups);
     if (!why.empty()) {
       // The reason met furthest into the checks: past the caps' own tests, a side's.
       const int depth = why.rfind("side ", 0) == 0 ? 2 : why.find(" share edge ") == std::string::npos ? 1 : 0;
@@ -209,7 +260,8 @@ ProjectedCaps find_projected_caps(const ShapeIndex& index, const std::vector<int
     if (out.source < 0 || rank > best_rank) {
       out.source = s;
       out.target = t;
-      out.sides = sides;
+      out.columns = columns;
+      out.groups = groups;
       best_rank = rank;
     }
   }
@@ -220,24 +272,32 @@ ProjectedCaps find_projected_caps(const ShapeIndex& index, const std::vector<int
 
 ProjectedPaths::ProjectedPaths(const ShapeIndex& index, const ProjectedCaps& caps, const std::vector<Vec3>& points,
                                const std::vector<bool>& rim, double tol)
-    : index_(index), source_(points) {
+    : index_(index), caps_(caps), rim_of_(points.size(), -1), source_(points) {
   std::vector<BRepAdaptor_Curve> source_curves;
-  for (const ProjectedSide& side : caps.sides) {
-    const TopoDS_Face& face = index.face(side.face);
-    SideFrame frame;
-    frame.side = side;
-    const gp_Pnt2d s0 = uv_at(side.source, face, side.source_forward, 0.0);
-    const gp_Pnt2d s1 = uv_at(side.source, face, side.source_forward, 1.0);
-    const gp_Pnt2d t0 = uv_at(side.target, face, side.target_forward, 0.0);
-    const gp_Pnt2d t1 = uv_at(side.target, face, side.target_forward, 1.0);
-    frame.su0 = s0.X(), frame.sv0 = s0.Y(), frame.su1 = s1.X(), frame.sv1 = s1.Y();
-    frame.tu0 = t0.X(), frame.tv0 = t0.Y(), frame.tu1 = t1.X(), frame.tv1 = t1.Y();
-    sides_.push_back(frame);
-    source_curves.emplace_back(side.source);
-    for (const TopoDS_Edge& link : {side.first_link, side.second_link}) {
-      height_ = std::max(height_, GCPnts_AbscissaPoint::Length(BRepAdaptor_Curve(link)));
+  std::vector<double> group_height(caps.groups, 0.0);
+  for (const ProjectedColumn& column : caps.columns) {
+    std::vector<BandFrame> frames;
+    double stack = 0;
+    for (const ProjectedBand& band : column.bands) {
+      const TopoDS_Face& face = index.face(band.face);
+      BandFrame frame;
+      int i = 0;
+      for (const auto& [edge, forward] : {std::pair(band.bottom, band.bottom_forward), std::pair(band.top, band.top_forward)}) {
+        for (double w : {0.0, 1.0}) {
+          const gp_Pnt2d uv = uv_at(edge, face, forward, w);
+          frame.u[i] = uv.X();
+          frame.v[i] = uv.Y();
+          ++i;
+        }
+      }
+      frames.push_back(frame);
+      stack += band.length;
     }
+    frames_.push_back(frames);
+    group_height[column.group] = std::max(group_height[column.group], stack);
+    source_curves.emplace_back(column.bands.front().bottom);
   }
+  for (double h : group_height) height_ = std::max(height_, h);
   ShapeAnalysis_Curve projector;
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!rim[i]) {
@@ -245,35 +305,54 @@ ProjectedPaths::ProjectedPaths(const ShapeIndex& index, const ProjectedCaps& cap
       continue;
     }
     const gp_Pnt p(points[i].x, points[i].y, points[i].z);
-    double best = std::numeric_limits<double>::infinity(), best_parameter = 0;
-    int best_side = -1;
-    for (std::size_t k = 0; k < sides_.size(); ++k) {
+    std::vector<std::pair<double, double>> found(caps.columns.size());  // (distance, parameter) per column
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t c = 0; c < caps.columns.size(); ++c) {
       gp_Pnt foot;
       double parameter = 0;
-      const double d = projector.Project(source_curves[k], p, tol, foot, parameter, true);
-      if (d < best) {
-        best = d;
-        best_parameter = parameter;
-        best_side = static_cast<int>(k);
-      }
+      const double d = projector.Project(source_curves[c], p, tol, foot, parameter, true);
+      found[c] = {d, parameter};
+      best = std::min(best, d);
     }
-    if (best_side < 0 || best > 1e3 * tol) {
+    if (!(best <= 1e3 * tol)) {
       throw InputError("a boundary node of the source " + face_name(caps.source) + " at (" +
                        std::to_string(points[i].x) + ", " + std::to_string(points[i].y) + ", " +
                        std::to_string(points[i].z) + ") lies on none of its edges");
     }
-    const SideFrame& frame = sides_[best_side];
-    const BRepAdaptor_Curve& curve = source_curves[best_side];
-    const double length = GCPnts_AbscissaPoint::Length(curve);
-    const double along = length > 0 ? GCPnts_AbscissaPoint::Length(curve, curve.FirstParameter(), best_parameter) / length : 0;
     RimPoint r;
     r.index = static_cast<int>(i);
-    r.side = best_side;
-    r.s = std::clamp(frame.side.source_forward ? along : 1 - along, 0.0, 1.0);
-    const TopoDS_Face& face = index.face(frame.side.face);
-    const gp_Pnt2d su = BRepAdaptor_Curve2d(frame.side.source, face).Value(best_parameter);
-    const gp_Pnt2d tu = uv_at(frame.side.target, face, frame.side.target_forward, r.s);
-    r.su = su.X(), r.sv = su.Y(), r.tu = tu.X(), r.tv = tu.Y();
+    // The columns it lies on: the nearest, and a neighbour sharing its vertex.
+    std::vector<std::size_t> order(caps.columns.size());
+    for (std::size_t c = 0; c < order.size(); ++c) order[c] = c;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return found[a].first < found[b].first; });
+    for (std::size_t c : order) {
+      if (!(found[c].first <= best + 10 * tol) || r.columns.size() == 2) break;
+      const ProjectedColumn& column = caps.columns[c];
+      const BRepAdaptor_Curve& curve = source_curves[c];
+      const double length = GCPnts_AbscissaPoint::Length(curve);
+      const double along =
+          length > 0 ? GCPnts_AbscissaPoint::Length(curve, curve.FirstParameter(), found[c].second) / length : 0;
+      OnColumn on;
+      on.column = static_cast<int>(c);
+      on.s = std::clamp(column.bands.front().bottom_forward ? along : 1 - along, 0.0, 1.0);
+      for (const ProjectedBand& band : column.bands) {
+        const TopoDS_Face& face = index.face(band.face);
+        const gp_Pnt2d bottom = uv_at(band.bottom, face, band.bottom_forward, on.s);
+        const gp_Pnt2d top = uv_at(band.top, face, band.top_forward, on.s);
+        on.ends.push_back({bottom.X(), bottom.Y(), top.X(), top.Y()});
+      }
+      // Exactly where the source's mesh put it, on the first band's bottom.
+      on.ends.front()[0] = BRepAdaptor_Curve2d(column.bands.front().bottom, index.face(column.bands.front().face))
+                               .Value(found[c].second)
+                               .X();
+      on.ends.front()[1] = BRepAdaptor_Curve2d(column.bands.front().bottom, index.face(column.bands.front().face))
+                               .Value(found[c].second)
+                               .Y();
+      r.columns.push_back(on);
+      // A point inside an edge is on one column only.
+      if (on.s > 1e-9 && on.s < 1 - 1e-9) break;
+    }
+    rim_of_[i] = static_cast<int>(rim_.size());
     rim_.push_back(r);
     source_rim_.push_back(points[i]);
   }
@@ -281,7 +360,10 @@ ProjectedPaths::ProjectedPaths(const ShapeIndex& index, const ProjectedCaps& cap
   // At most 128 rim points carry the misfit inside: it varies slowly along the rim.
   const std::size_t stride = std::max<std::size_t>(1, rim_.size() / 128);
   for (std::size_t k = 0; k < rim_.size(); k += stride) samples_.push_back(static_cast<int>(k));
-  target_rim_ = rim_at(1.0);
+  std::size_t most_bands = 1;
+  for (const ProjectedColumn& column : caps.columns) most_bands = std::max(most_bands, column.bands.size());
+  set_layers(static_cast<int>(most_bands));  // the target is the last layer, whatever their count
+  target_rim_ = rim_at(layers_);
   // The target's interior: the source's, mapped as the boundary is, then put on the
   // target's surface.
   target_ = source_;
@@ -297,39 +379,116 @@ ProjectedPaths::ProjectedPaths(const ShapeIndex& index, const ProjectedCaps& cap
   }
 }
 
-std::vector<Vec3> ProjectedPaths::rim_at(double t) const {
-  // Per side, its links' (u, v) at t.
-  std::vector<gp_Pnt2d> first(sides_.size()), second(sides_.size());
-  std::vector<BRepAdaptor_Surface> surfaces;
-  surfaces.reserve(sides_.size());
-  for (std::size_t k = 0; k < sides_.size(); ++k) {
-    const ProjectedSide& side = sides_[k].side;
-    const TopoDS_Face& face = index_.face(side.face);
-    first[k] = uv_at(side.first_link, face, side.first_forward, t);
-    second[k] = uv_at(side.second_link, face, side.second_forward, t);
-    surfaces.emplace_back(face);
+int ProjectedPaths::layers_for(double size) const {
+  int most = 1;
+  std::vector<int> per_group(caps_.groups, 0);
+  std::vector<bool> seen(caps_.groups, false);
+  for (const ProjectedColumn& column : caps_.columns) {
+    if (seen[column.group]) continue;
+    seen[column.group] = true;
+    // The group's longest link per band (over its columns).
+    std::vector<double> lengths(column.bands.size(), 0.0);
+    for (const ProjectedColumn& other : caps_.columns) {
+      if (other.group != column.group) continue;
+      for (std::size_t b = 0; b < lengths.size(); ++b) lengths[b] = std::max(lengths[b], other.bands[b].length);
+    }
+    int sum = 0;
+    for (double l : lengths) sum += std::max(1, static_cast<int>(std::lround(l / size)));
+    most = std::max(most, sum);
+  }
+  return most;
+}
+
+void ProjectedPaths::set_layers(int layers) {
+  starts_.assign(caps_.groups, {});
+  for (const ProjectedColumn& column : caps_.columns) {
+    std::vector<int>& starts = starts_[column.group];
+    if (!starts.empty()) continue;
+    const std::size_t bands = column.bands.size();
+    if (static_cast<int>(bands) > layers) {
+      throw InputError(std::to_string(layers) + " layers are fewer than the " + std::to_string(bands) +
+                       " side faces stacked above edge " + std::to_string(column.source_edge));
+    }
+    std::vector<double> lengths(bands, 0.0);
+    for (const ProjectedColumn& other : caps_.columns) {
+      if (other.group != column.group) continue;
+      for (std::size_t b = 0; b < bands; ++b) lengths[b] = std::max(lengths[b], other.bands[b].length);
+    }
+    // Each band at least one layer, the rest shared after length (largest remainder).
+    double total = 0;
+    for (double l : lengths) total += l;
+    std::vector<int> share(bands, 1);
+    const int spare = layers - static_cast<int>(bands);
+    std::vector<std::pair<double, std::size_t>> remainders;
+    int given = 0;
+    for (std::size_t b = 0; b < bands; ++b) {
+      const double exact = total > 0 ? spare * lengths[b] / total : static_cast<double>(spare) / bands;
+      share[b] += static_cast<int>(std::floor(exact));
+      given += static_cast<int>(std::floor(exact));
+      remainders.emplace_back(exact - std::floor(exact), b);
+    }
+    std::sort(remainders.begin(), remainders.end(), [](const auto& a, const auto& b) {
+      return a.first != b.first ? a.first > b.first : a.second < b.second;
+    });
+    for (int k = 0; k < spare - given; ++k) ++share[remainders[k % bands].second];
+    starts.push_back(0);
+    for (int n : share) starts.push_back(starts.back() + n);
+  }
+  layers_ = layers;
+}
+
+std::pair<int, double> ProjectedPaths::band_at(int column, double k) const {
+  const std::vector<int>& starts = starts_[caps_.columns[column].group];
+  const int bands = static_cast<int>(starts.size()) - 1;
+  int b = 0;
+  while (b + 1 < bands && k > starts[b + 1]) ++b;
+  const double span = starts[b + 1] - starts[b];
+  return {b, std::clamp((k - starts[b]) / span, 0.0, 1.0)};
+}
+
+std::vector<Vec3> ProjectedPaths::rim_at(double k) const {
+  // Per column, its band at k, the fraction through it, and its links' (u, v) there.
+  struct Place {
+    int band = 0;
+    double t = 0;
+    gp_Pnt2d first, second;
+  };
+  std::vector<Place> places(caps_.columns.size());
+  std::map<int, BRepAdaptor_Surface> surfaces;
+  for (std::size_t c = 0; c < caps_.columns.size(); ++c) {
+    Place& place = places[c];
+    std::tie(place.band, place.t) = band_at(static_cast<int>(c), k);
+    const ProjectedBand& band = caps_.columns[c].bands[place.band];
+    const TopoDS_Face& face = index_.face(band.face);
+    place.first = uv_at(band.first_link, face, band.first_forward, place.t);
+    place.second = uv_at(band.second_link, face, band.second_forward, place.t);
+    surfaces.try_emplace(band.face, face);
   }
   std::vector<Vec3> out;
   out.reserve(rim_.size());
   for (const RimPoint& r : rim_) {
-    const SideFrame& f = sides_[r.side];
-    const double s = r.s;
-    // Transfinite interpolation of the side's four edges (Coons patch) in its (u, v).
-    const double u = (1 - t) * r.su + t * r.tu + (1 - s) * first[r.side].X() + s * second[r.side].X() -
-                     ((1 - s) * (1 - t) * f.su0 + s * (1 - t) * f.su1 + (1 - s) * t * f.tu0 + s * t * f.tu1);
-    const double v = (1 - t) * r.sv + t * r.tv + (1 - s) * first[r.side].Y() + s * second[r.side].Y() -
-                     ((1 - s) * (1 - t) * f.sv0 + s * (1 - t) * f.sv1 + (1 - s) * t * f.tv0 + s * t * f.tv1);
-    out.push_back(to_vec3(surfaces[r.side].Value(u, v)));
+    const OnColumn& on = r.columns.front();
+    const Place& place = places[on.column];
+    const BandFrame& f = frames_[on.column][place.band];
+    const std::array<double, 4>& e = on.ends[place.band];
+    const double s = on.s, t = place.t;
+    // Transfinite interpolation of the band's four edges (a Coons patch) in its (u, v).
+    const double u = (1 - t) * e[0] + t * e[2] + (1 - s) * place.first.X() + s * place.second.X() -
+                     ((1 - s) * (1 - t) * f.u[0] + s * (1 - t) * f.u[1] + (1 - s) * t * f.u[2] + s * t * f.u[3]);
+    const double v = (1 - t) * e[1] + t * e[3] + (1 - s) * place.first.Y() + s * place.second.Y() -
+                     ((1 - s) * (1 - t) * f.v[0] + s * (1 - t) * f.v[1] + (1 - s) * t * f.v[2] + s * t * f.v[3]);
+    out.push_back(to_vec3(surfaces.at(caps_.columns[on.column].bands[place.band].face).Value(u, v)));
   }
   return out;
 }
 
-std::vector<Vec3> ProjectedPaths::at(double t) const {
-  if (t <= 0) return source_;
-  if (t >= 1) return target_;
-  const std::vector<Vec3> rim = rim_at(t);
+std::vector<Vec3> ProjectedPaths::at(double k) const {
+  if (k <= 0) return source_;
+  if (k >= layers_) return target_;
+  const double t = k / layers_;
+  const std::vector<Vec3> rim = rim_at(k);
   std::vector<Vec3> out = source_;
-  for (std::size_t k = 0; k < rim_.size(); ++k) out[rim_[k].index] = rim[k];
+  for (std::size_t j = 0; j < rim_.size(); ++j) out[rim_[j].index] = rim[j];
   const AffineMap from_source = AffineMap::fit(source_rim_, rim);
   const AffineMap from_target = AffineMap::fit(target_rim_, rim);
   const std::vector<Vec3> source_misfit = residuals_of(from_source, source_rim_, rim);
@@ -339,6 +498,24 @@ std::vector<Vec3> ProjectedPaths::at(double t) const {
     const Vec3 above = from_target(target_[i]) + carried_residual(target_[i], target_rim_, target_misfit, samples_);
     out[i] = (1 - t) * below + t * above;
   }
+  return out;
+}
+
+std::vector<int> ProjectedPaths::faces_at(int point, double k) const {
+  std::vector<int> out;
+  if (point < 0 || point >= static_cast<int>(rim_of_.size()) || rim_of_[point] < 0) return out;
+  {
+    const RimPoint& r = rim_[rim_of_[point]];
+    for (const OnColumn& on : r.columns) {
+      const std::vector<int>& starts = starts_[caps_.columns[on.column].group];
+      const auto& bands = caps_.columns[on.column].bands;
+      for (std::size_t b = 0; b < bands.size(); ++b) {
+        if (k >= starts[b] - 1e-9 && k <= starts[b + 1] + 1e-9) out.push_back(bands[b].face);
+      }
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 

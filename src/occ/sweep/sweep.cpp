@@ -391,38 +391,42 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
   // fraction f of the sweep.
   std::vector<Vec3> points = base;
   points.insert(points.end(), base_middles.begin(), base_middles.end());
+  // Where the route puts the first n source points at layer position k (0 to the
+  // layers; k + 0.5 between two).
   std::function<std::vector<Vec3>(double, std::size_t)> place;
+  int layers = 1;
   double height = 0.0;
-  int fewest_layers = 1;
   const SweepMotion& motion = caps.motion;
+  std::shared_ptr<ProjectedPaths> paths;
   if (caps.projected) {
     std::vector<bool> rim(points.size(), false);
     for (NodeId n : rim_corners) rim[compact.at(n)] = true;
     for (NodeId n : rim_middles) rim[count + compact_middle.at(n)] = true;
-    auto paths = std::make_shared<const ProjectedPaths>(index, *caps.projected, points, rim, tol);
+    paths = std::make_shared<ProjectedPaths>(index, *caps.projected, points, rim, tol);
     height = paths->height();
-    place = [paths](double f, std::size_t n) {
-      std::vector<Vec3> all = paths->at(f);
+    layers = options.layers > 0 ? options.layers : paths->layers_for(size);
+    paths->set_layers(layers);  // each stacked side a share
+    place = [paths](double k, std::size_t n) {
+      std::vector<Vec3> all = paths->at(k);
       all.resize(n);
       return all;
     };
   } else {
     for (const Vec3& p : base) height = std::max(height, motion.length(gp_Pnt(p.x, p.y, p.z)));
-    // A revolution: at most 45 degrees a layer (the rule curved edges follow,
-    // edge_discretization.h).
-    if (motion.rotation) fewest_layers = static_cast<int>(std::ceil(std::abs(motion.angle) / (M_PI / 4) - 1e-9));
-    place = [&points, &motion](double f, std::size_t n) {
+    // The longest path over the size; a revolution at most 45 degrees a layer (the
+    // rule curved edges follow, edge_discretization.h).
+    const int fewest = motion.rotation ? static_cast<int>(std::ceil(std::abs(motion.angle) / (M_PI / 4) - 1e-9)) : 1;
+    layers = std::max({1, fewest, static_cast<int>(std::lround(height / size))});
+    if (options.layers > 0) layers = options.layers;
+    if (closed && layers < 3) layers = 3;  // fewer would join a layer to itself
+    place = [&points, &motion, layers](double k, std::size_t n) {
       std::vector<Vec3> moved(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(n));
-      if (f == 0) return moved;
-      const gp_Trsf move = motion.part(f);
+      if (k == 0) return moved;
+      const gp_Trsf move = motion.part(k / layers);
       for (Vec3& p : moved) p = to_vec3(gp_Pnt(p.x, p.y, p.z).Transformed(move));
       return moved;
     };
   }
-  // The layers: the longest path over the size.
-  int layers = std::max({1, fewest_layers, static_cast<int>(std::lround(height / size))});
-  if (options.layers > 0) layers = options.layers;
-  if (closed && layers < 3) layers = 3;  // fewer would join a layer to itself
   const int stored = closed ? layers : layers + 1;  // a full turn's last layer is its first
   const auto offset = static_cast<long long>(out.nodes.size());
   if ((count + middles) * stored + (second ? count * layers : 0) > static_cast<long long>(INT32_MAX) - offset) {
@@ -432,7 +436,7 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
   // the paths between layers.
   std::vector<Vec3> layer_middles;
   for (int k = 0; k < stored; ++k) {
-    const std::vector<Vec3> moved = place(static_cast<double>(k) / layers, points.size());
+    const std::vector<Vec3> moved = place(k, points.size());
     out.nodes.insert(out.nodes.end(), moved.begin(), moved.begin() + count);
     layer_middles.insert(layer_middles.end(), moved.begin() + count, moved.end());
   }
@@ -443,7 +447,7 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
   layer_middles = std::vector<Vec3>();
   const auto path_offset = static_cast<long long>(out.nodes.size());
   for (int k = 0; k < layers && second; ++k) {
-    const std::vector<Vec3> moved = place((k + 0.5) / layers, static_cast<std::size_t>(count));
+    const std::vector<Vec3> moved = place(k + 0.5, static_cast<std::size_t>(count));
     out.nodes.insert(out.nodes.end(), moved.begin(), moved.end());
   }
   const auto plane_middle = [&](NodeId a, NodeId b, int k) {
@@ -519,6 +523,35 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
     }
     out.face_nodes.emplace_back(caps.source, source_nodes);
     out.face_nodes.emplace_back(caps.target, target_nodes);
+  }
+  if (paths) {
+    // The general route knows each rim point's side faces at every layer (stacked
+    // sides hold it over their share of the layers only).
+    std::map<int, std::vector<NodeId>> on_side;
+    for (NodeId original : rim_corners) {
+      const NodeId i = compact.at(original);
+      for (int k = 0; k < stored; ++k) {
+        for (int f : paths->faces_at(i, k)) on_side[f].push_back(static_cast<NodeId>(offset + k * count + i));
+      }
+      for (int k = 0; k < layers && second; ++k) {
+        for (int f : paths->faces_at(i, k + 0.5)) on_side[f].push_back(static_cast<NodeId>(path_offset + k * count + i));
+      }
+    }
+    for (NodeId original : rim_middles) {
+      const NodeId i = compact_middle.at(original);
+      for (int k = 0; k < stored; ++k) {
+        for (int f : paths->faces_at(static_cast<int>(count + i), k)) {
+          on_side[f].push_back(static_cast<NodeId>(plane_offset + k * middles + i));
+        }
+      }
+    }
+    for (int f : solid_faces) {
+      if (f == caps.source || f == caps.target) continue;
+      std::vector<NodeId>& nodes = on_side[f];
+      std::sort(nodes.begin(), nodes.end());
+      out.face_nodes.emplace_back(f, nodes);
+    }
+    return;
   }
   for (int f : solid_faces) {
     if (f == caps.source || f == caps.target) continue;
