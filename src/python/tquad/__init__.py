@@ -297,11 +297,12 @@ def sweep_shape(brep_text_or_path: str, *, size: float = 0.0, min_size: float = 
                 order: int = 1) -> SweptMesh:
     """Sweep the solids of a CAD shape into hexahedra (as ``tquad sweep``).
 
-    A solid is swept when it is an extrusion or a partial revolution: two planar caps
-    that are the same face moved or turned (under a full turn, the profile clear of
-    the axis), joined by side faces each running from cap to cap in one piece. The
-    source cap is meshed as mesh_shape meshes a face; the target gets the same quads
-    moved; the layers are the exact translation or rotation. Other solids are refused.
+    A solid is swept when it is an extrusion or a revolution (planar caps that are the
+    same face moved or turned, the profile clear of the axis; or a full turn), or a
+    one-to-one sweep: two caps joined by four-sided side faces, stacked or not (lofts,
+    pipes along curves). The source cap is meshed as mesh_shape meshes a face; the
+    target gets the same quads moved; the layers are the exact translation or rotation,
+    or else placed by least-squares projection. Other solids are refused.
 
     Args:
         brep_text_or_path: BREP text or the path of a .step/.stp, .iges/.igs or .brep file.
@@ -316,7 +317,7 @@ def sweep_shape(brep_text_or_path: str, *, size: float = 0.0, min_size: float = 
 
     Raises:
         ValueError: unreadable shape, no solid, a solid that is not sweepable (without
-            keep_going), given caps that are not an extrusion's, or bad options.
+            keep_going), given caps that are not a sweep's, or bad options.
     """
     if (source is None) != (target is None):
         raise ValueError("give both source and target, or neither")
