@@ -453,6 +453,32 @@ TEST(Sweep, TwistedAndScaledLoftsAreSweptByProjection) {
       expect_projected_sweep(loft(square(20, 0, 0), square(12, 20, turn), ruled));
     }
   }
+  // Outlines whose edges lie on each other's lines and circles (a notched plate; a
+  // barrel cut by two arcs of one circle): each boundary node goes up its own edge's
+  // side, not up a side whose edge's line or circle passes through it.
+  const auto scaled = [](const TopoDS_Wire& w, double scale, double z) {
+    gp_Trsf t;
+    t.SetScale(gp_Pnt(0, 0, 0), scale);
+    gp_Trsf up;
+    up.SetTranslation(gp_Vec(0, 0, z));
+    return TopoDS::Wire(BRepBuilderAPI_Transform(w, up * t, true).Shape());
+  };
+  BRepBuilderAPI_MakePolygon notched;
+  for (const auto& [x, y] : std::vector<std::pair<double, double>>{
+           {-15, -10}, {15, -10}, {15, 10}, {5, 10}, {5, 0}, {-5, 0}, {-5, 10}, {-15, 10}}) {
+    notched.Add(gp_Pnt(x, y, 0));
+  }
+  notched.Close();
+  SCOPED_TRACE("notched outline");
+  expect_projected_sweep(loft(notched.Wire(), scaled(notched.Wire(), 0.6, 20), true));
+  const gp_Circ round(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), std::hypot(4.0, 12.0));
+  BRepBuilderAPI_MakeWire barrel;
+  barrel.Add(BRepBuilderAPI_MakeEdge(round, gp_Pnt(4, 12, 0), gp_Pnt(-4, 12, 0)).Edge());
+  barrel.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(-4, 12, 0), gp_Pnt(-4, -12, 0)).Edge());
+  barrel.Add(BRepBuilderAPI_MakeEdge(round, gp_Pnt(-4, -12, 0), gp_Pnt(4, -12, 0)).Edge());
+  barrel.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(4, -12, 0), gp_Pnt(4, 12, 0)).Edge());
+  SCOPED_TRACE("barrel outline");
+  expect_projected_sweep(loft(barrel.Wire(), scaled(barrel.Wire(), 0.6, 20), true));
   // Circles of two radii, off axis: a slanted truncated cone.
   const gp_Circ bottom(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 10);
   const gp_Circ top(gp_Ax2(gp_Pnt(4, 0, 15), gp_Dir(0, 0, 1)), 5);

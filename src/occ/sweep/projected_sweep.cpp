@@ -4,6 +4,7 @@
 #include <BRepAdaptor_Curve2d.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepTools.hxx>
+#include <ElCLib.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
@@ -310,7 +311,15 @@ ProjectedPaths::ProjectedPaths(const ShapeIndex& index, const ProjectedCaps& cap
     for (std::size_t c = 0; c < caps.columns.size(); ++c) {
       gp_Pnt foot;
       double parameter = 0;
-      const double d = projector.Project(source_curves[c], p, tol, foot, parameter, true);
+      projector.Project(source_curves[c], p, tol, foot, parameter, true);
+      // On a periodic curve (an arc of a circle) the projection may land on the rest
+      // of the circle: the distance counts on the edge's own range only.
+      const BRepAdaptor_Curve& curve = source_curves[c];
+      if (curve.IsPeriodic() && (parameter < curve.FirstParameter() || parameter > curve.LastParameter())) {
+        parameter = ElCLib::InPeriod(parameter, curve.FirstParameter(), curve.FirstParameter() + curve.Period());
+      }
+      parameter = std::clamp(parameter, curve.FirstParameter(), curve.LastParameter());
+      const double d = p.Distance(curve.Value(parameter));
       found[c] = {d, parameter};
       best = std::min(best, d);
     }
