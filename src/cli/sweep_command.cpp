@@ -1,6 +1,7 @@
 #include "cli/sweep_command.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <new>
 #include <stdexcept>
@@ -9,6 +10,7 @@
 
 #include "cli/cad_input.h"
 #include "cli/exit_status.h"
+#include "core/elapsed.h"
 #include "core/input_error.h"
 #include "io/atomic_file_writer.h"
 #include "io/hex_writers.h"
@@ -47,7 +49,9 @@ int run(const SweepCommand& command, std::ostream& out, std::ostream& err) {
   const SweepOutput result = sweep_through_module(command);
   for (const std::string& w : result.read_warnings) err << "tquad: warning: " << one_line(w) << "\n";
   for (const RefusedSolid& r : result.mesh.refused) err << "tquad: warning: not swept: " << one_line(r.reason) << "\n";
+  const auto write_start = std::chrono::steady_clock::now();
   write_hex_file(command.output, result.mesh);
+  const double write_seconds = seconds_since(write_start);
   const std::vector<double>& sj = result.mesh.scaled_jacobian;
   const double worst = sj.empty() ? 0.0 : *std::min_element(sj.begin(), sj.end());
   double sum = 0;
@@ -79,6 +83,11 @@ int run(const SweepCommand& command, std::ostream& out, std::ostream& err) {
     for (const RefusedSolid& r : result.mesh.refused) refused.push_back({{"solid", r.solid}, {"reason", r.reason}});
     report["refused_solids"] = refused;
     report["read_warnings"] = result.read_warnings;
+    report["seconds"] = {{"read", result.read_seconds},
+                         {"source", result.source_seconds},
+                         {"layers", result.layer_seconds},
+                         {"node_sets", result.node_set_seconds},
+                         {"write", write_seconds}};
     out << report.dump(2) << "\n";
     return 0;
   }

@@ -25,6 +25,8 @@ struct SweepOutput {
   HexMesh mesh;
   double size = 0.0;
   std::vector<std::string> read_warnings;
+  // Wall seconds: reading (in its child process), then sweep_shape's stages.
+  double read_seconds = 0.0, source_seconds = 0.0, layer_seconds = 0.0, node_set_seconds = 0.0;
 };
 
 // Exit status as run_mesh_command's: 0 done, 2 the input or the command line is

@@ -28,7 +28,7 @@ std::string extension_of(const std::string& path) {
 
 void append_ids(std::string& text, const std::vector<NodeId>& ids, int per_line) {
   for (std::size_t i = 0; i < ids.size(); ++i) {
-    text += std::to_string(ids[i] + 1);
+    append_integer(text, static_cast<long long>(ids[i]) + 1);
     text += (i + 1 == ids.size() || (i + 1) % per_line == 0) ? "\n" : ", ";
   }
 }
@@ -83,7 +83,7 @@ void write_hex_inp(std::ostream& out, const HexMesh& mesh) {
   for (const RefusedSolid& r : mesh.refused) text += "** not swept: " + r.reason.substr(0, 110) + "\n";
   text += "*NODE, NSET=NALL\n";
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
-    text += std::to_string(i + 1);
+    append_integer(text, static_cast<long long>(i) + 1);
     for (double v : {mesh.nodes[i].x, mesh.nodes[i].y, mesh.nodes[i].z}) {
       text += ", ";
       append_double_within(text, v, kInpFieldWidth);
@@ -94,14 +94,14 @@ void write_hex_inp(std::ostream& out, const HexMesh& mesh) {
   for (const SweptSolid& s : mesh.solids) {
     text += "*ELEMENT, TYPE=" + type + ", ELSET=SOLID" + std::to_string(s.solid) + "\n";
     for (std::int64_t k = s.first_hex; k < s.first_hex + s.hex_count; ++k) {
-      text += std::to_string(k + 1);
+      append_integer(text, k + 1);
       // At most 16 entries a line (the element number and 15 nodes), then a
       // continuation line: C3D20's 21 entries take two.
       int entries = 1;
       for (NodeId n : mesh.element_nodes(static_cast<std::size_t>(k))) {
         text += entries == 16 ? ",\n" : ", ";
         if (entries == 16) entries = 0;
-        text += std::to_string(n + 1);
+        append_integer(text, static_cast<long long>(n) + 1);
         ++entries;
       }
       text += "\n";
@@ -159,13 +159,17 @@ void write_hex_vtu(std::ostream& out, const HexMesh& mesh) {
   text += "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
   const int per = mesh.nodes_per_element();
   for (std::size_t k = 0; k < mesh.hexes.size(); ++k) {
-    const std::vector<NodeId> ids = mesh.element_nodes(k);
-    for (int i = 0; i < per; ++i) text += std::to_string(ids[i]) + (i + 1 == per ? "\n" : " ");
+    const HexMesh::ElementNodes ids = mesh.element_nodes(k);
+    for (int i = 0; i < per; ++i) {
+      append_integer(text, ids[i]);
+      text += i + 1 == per ? '\n' : ' ';
+    }
     flush_if_large(out, text);
   }
   text += "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
   for (std::size_t k = 0; k < mesh.hexes.size(); ++k) {
-    text += std::to_string(static_cast<std::size_t>(per) * (k + 1)) + "\n";
+    append_integer(text, static_cast<long long>(per) * static_cast<long long>(k + 1));
+    text += '\n';
     flush_if_large(out, text);
   }
   text += "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
@@ -184,7 +188,8 @@ void write_hex_vtu(std::ostream& out, const HexMesh& mesh) {
   text += "</DataArray>\n<DataArray type=\"Int32\" Name=\"solid\" format=\"ascii\">\n";
   for (const SweptSolid& s : mesh.solids) {
     for (std::int64_t k = 0; k < s.hex_count; ++k) {
-      text += std::to_string(s.solid) + "\n";
+      append_integer(text, s.solid);
+      text += '\n';
       flush_if_large(out, text);
     }
   }
@@ -208,8 +213,11 @@ void write_hex_json(std::ostream& out, const HexMesh& mesh) {
   text += "],\n\"hexes\": [";
   for (std::size_t k = 0; k < mesh.hexes.size(); ++k) {
     text += k ? ",\n[" : "\n[";
-    const std::vector<NodeId> ids = mesh.element_nodes(k);
-    for (std::size_t i = 0; i < ids.size(); ++i) text += std::to_string(ids[i]) + (i + 1 == ids.size() ? "]" : ", ");
+    const HexMesh::ElementNodes ids = mesh.element_nodes(k);
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      append_integer(text, ids[i]);
+      text += i + 1 == ids.size() ? "]" : ", ";
+    }
     flush_if_large(out, text);
   }
   text += "],\n\"solids\": [";
@@ -259,7 +267,10 @@ void write_hex_json(std::ostream& out, const HexMesh& mesh) {
   for (const auto& [face, nodes] : merged_face_nodes(mesh)) {
     text += std::string(first ? "\n" : ",\n") + "\"" + std::to_string(face) + "\": [";
     first = false;
-    for (std::size_t j = 0; j < nodes.size(); ++j) text += (j ? ", " : "") + std::to_string(nodes[j]);
+    for (std::size_t j = 0; j < nodes.size(); ++j) {
+      if (j) text += ", ";
+      append_integer(text, nodes[j]);
+    }
     text += "]";
     flush_if_large(out, text);
   }
@@ -314,7 +325,10 @@ void write_hex_msh(std::ostream& out, const HexMesh& mesh) {
           std::to_string(mesh.nodes.size()) + "\n";
   for (std::size_t r = 0; r < mesh.solids.size(); ++r) {
     text += "3 " + std::to_string(mesh.solids[r].solid + 1) + " 0 " + std::to_string(blocks[r].size()) + "\n";
-    for (NodeId n : blocks[r]) text += std::to_string(n + 1) + "\n";
+    for (NodeId n : blocks[r]) {
+      append_integer(text, static_cast<long long>(n) + 1);
+      text += '\n';
+    }
     for (NodeId n : blocks[r]) {
       append_double(text, mesh.nodes[n].x);
       text += " ";
@@ -330,10 +344,16 @@ void write_hex_msh(std::ostream& out, const HexMesh& mesh) {
   for (const SweptSolid& s : mesh.solids) {
     text += "3 " + std::to_string(s.solid + 1) + " " + std::to_string(type) + " " + std::to_string(s.hex_count) + "\n";
     for (std::int64_t k = s.first_hex; k < s.first_hex + s.hex_count; ++k) {
-      text += std::to_string(k + 1);
-      for (NodeId n : mesh.hexes[k]) text += " " + std::to_string(n + 1);
+      append_integer(text, k + 1);
+      for (NodeId n : mesh.hexes[k]) {
+        text += ' ';
+        append_integer(text, static_cast<long long>(n) + 1);
+      }
       if (mesh.second_order()) {
-        for (int e : kGmshEdges) text += " " + std::to_string(mesh.mid_nodes[k][e] + 1);
+        for (int e : kGmshEdges) {
+          text += ' ';
+          append_integer(text, static_cast<long long>(mesh.mid_nodes[k][e]) + 1);
+        }
       }
       text += "\n";
       flush_if_large(out, text);

@@ -10,6 +10,12 @@ void append_double(std::string& text, double value) {
   text.append(buffer, result.ptr);
 }
 
+void append_integer(std::string& text, long long value) {
+  char buffer[24];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  text.append(buffer, result.ptr);
+}
+
 void append_double_within(std::string& text, double value, int width) {
   char buffer[40];
   auto result = std::to_chars(buffer, buffer + sizeof buffer, value);

@@ -13,6 +13,8 @@ namespace tquad {
 // check_shape_mesh, which refuses NaN and infinite coordinates (no mesh file format
 // here can express them).
 void append_double(std::string& text, double value);
+// The integer's decimal digits (std::to_chars: no allocation).
+void append_integer(std::string& text, long long value);
 
 // The same, in at most `width` characters: the shortest round-trip text when it fits,
 // else the most significant digits that fit (CalculiX reads a field of at most 20

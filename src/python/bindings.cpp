@@ -341,7 +341,7 @@ py::dict sweep_shape_binding(const std::string& brep_text_or_path, double size, 
   py::array_t<std::int32_t> hexes({static_cast<py::ssize_t>(mesh.hexes.size()), py::ssize_t{per}});
   auto h = hexes.mutable_unchecked<2>();
   for (py::ssize_t i = 0; i < h.shape(0); ++i) {
-    const std::vector<NodeId> ids = mesh.element_nodes(static_cast<std::size_t>(i));
+    const HexMesh::ElementNodes ids = mesh.element_nodes(static_cast<std::size_t>(i));
     for (int k = 0; k < per; ++k) h(i, k) = ids[k];
   }
   py::list solids, refused;

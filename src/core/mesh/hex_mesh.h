@@ -2,6 +2,7 @@
 // the report need: the solids swept and refused, and each CAD face's nodes.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -58,11 +59,24 @@ struct HexMesh {
 
   bool second_order() const { return !mid_nodes.empty(); }
   int nodes_per_element() const { return second_order() ? 20 : 8; }
-  // Hexahedron k's nodes: its 8 corners, then (second order) its 12 edge middles.
-  std::vector<NodeId> element_nodes(std::size_t k) const {
-    std::vector<NodeId> ids(hexes[k].begin(), hexes[k].end());
-    if (second_order()) ids.insert(ids.end(), mid_nodes[k].begin(), mid_nodes[k].end());
-    return ids;
+  // Hexahedron k's nodes: its 8 corners, then (second order) its 12 edge middles. A
+  // value (the writers call it for every element: no allocation).
+  struct ElementNodes {
+    std::array<NodeId, 20> ids{};
+    std::size_t count = 8;
+    const NodeId* begin() const { return ids.data(); }
+    const NodeId* end() const { return ids.data() + count; }
+    std::size_t size() const { return count; }
+    NodeId operator[](std::size_t i) const { return ids[i]; }
+  };
+  ElementNodes element_nodes(std::size_t k) const {
+    ElementNodes e;
+    std::copy(hexes[k].begin(), hexes[k].end(), e.ids.begin());
+    if (second_order()) {
+      std::copy(mid_nodes[k].begin(), mid_nodes[k].end(), e.ids.begin() + 8);
+      e.count = 20;
+    }
+    return e;
   }
 };
 

@@ -21,6 +21,7 @@
 #include <gp_Vec.hxx>
 
 #include <algorithm>
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <cmath>
@@ -67,6 +68,14 @@ gp_Pnt centroid(const std::vector<gp_Pnt>& points) {
 }
 
 std::string face_name(int f) { return "face " + std::to_string(f); }
+
+// Room for `extra` more elements, growing by half at least: one copy per solid at
+// most, not one per doubling of a large sweep.
+template <typename T>
+void make_room(std::vector<T>& v, std::size_t extra) {
+  const std::size_t needed = v.size() + extra;
+  if (needed > v.capacity()) v.reserve(std::max(needed, v.capacity() + v.capacity() / 2));
+}
 
 // How the source cap becomes the target: a translation by `d` (an extrusion) or a
 // rotation by `angle` about `axis` (a revolution); `at(p, f)` is the fraction f of it.
@@ -338,13 +347,17 @@ double shape_diagonal(const TopoDS_Shape& shape) {
 
 // One solid's hexahedra, appended to `out`; throws InputError naming what failed.
 void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, const std::vector<int>& solid_faces,
-                 const SolidCaps& caps, const SweepOptions& options, double tol, HexMesh& out, double& size) {
+                 const SolidCaps& caps, const SweepOptions& options, double tol, HexMesh& out, SweepResult& times) {
+  double& size = times.size;
+  auto start = std::chrono::steady_clock::now();
   ShapeMeshOptions face = options.face;
   face.keep_going = false;
   const bool closed = caps.motion.closed;
   if (!closed) face.faces = {caps.source};
   if (closed) face.damaged_faces.clear();  // numbered for the shape, not the profile
   const ShapeMeshResult source = mesh_shape(closed ? caps.profile : shape, face);
+  times.source_seconds += seconds_since(start);
+  start = std::chrono::steady_clock::now();
   size = source.size;
   // The source's nodes, compacted to those of its quads.
   std::map<NodeId, NodeId> compact;
@@ -432,6 +445,14 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
   if ((count + middles) * stored + (second ? count * layers : 0) > static_cast<long long>(INT32_MAX) - offset) {
     throw InputError("solid " + std::to_string(solid) + ": the sweep would have over 2^31 nodes; use fewer layers or a larger size");
   }
+  const std::size_t hex_count = source.mesh.quads.size() * static_cast<std::size_t>(layers);
+  make_room(out.nodes, static_cast<std::size_t>((count + middles) * stored + (second ? count * layers : 0)));
+  make_room(out.hexes, hex_count);
+  make_room(out.scaled_jacobian, hex_count);
+  if (second) {
+    make_room(out.mid_nodes, hex_count);
+    make_room(out.jacobian_ratio, hex_count);
+  }
   // The nodes: every layer's corners, then every layer's middles, then the middles on
   // the paths between layers.
   std::vector<Vec3> layer_middles;
@@ -509,6 +530,14 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
   }
   record.hex_count = static_cast<std::int64_t>(out.hexes.size()) - record.first_hex;
   out.solids.push_back(record);
+  times.layer_seconds += seconds_since(start);
+  start = std::chrono::steady_clock::now();
+  // A return below leaves the node sets' time counted.
+  struct Count {
+    std::chrono::steady_clock::time_point start;
+    double& into;
+    ~Count() { into += seconds_since(start); }
+  } count_node_sets{start, times.node_set_seconds};
   // Node sets: the caps (an extrusion's or a partial revolution's), then each side face
   // through the source's boundary nodes on it (a full turn's faces are all sides).
   if (!closed) {
@@ -660,7 +689,7 @@ SweepResult sweep_shape(const TopoDS_Shape& shape, const SweepOptions& options) 
       const std::size_t nodes = m.nodes.size(), hexes = m.hexes.size(), sets = m.face_nodes.size(),
                         swept = m.solids.size();
       try {
-        sweep_solid(shape, index, solid, solid_faces, caps, for_solid, tol, result.mesh, result.size);
+        sweep_solid(shape, index, solid, solid_faces, caps, for_solid, tol, result.mesh, result);
       } catch (const FacesRefusedError& e) {
         refusal = "solid " + std::to_string(solid) + ": its source face was not meshed: " + e.what();
       } catch (const InputError& e) {

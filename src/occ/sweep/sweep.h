@@ -41,6 +41,9 @@ struct SweepOptions {
 struct SweepResult {
   HexMesh mesh;
   double size = 0.0;  // the target edge length used
+  // Wall seconds, summed over the solids: meshing their sources; placing the layers
+  // and building and measuring the hexahedra; finding each CAD face's nodes.
+  double source_seconds = 0.0, layer_seconds = 0.0, node_set_seconds = 0.0;
 };
 
 // Throws InputError when the shape has no solid, when a given source and target are
