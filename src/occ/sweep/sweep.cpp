@@ -30,6 +30,7 @@
 #include <set>
 
 #include "core/input_error.h"
+#include "core/repair/hex_smoothing.h"
 #include "occ/model/occ_vec.h"
 #include "occ/model/shape_index.h"
 #include "occ/sweep/projected_sweep.h"
@@ -521,6 +522,79 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
       if (!(ratio > 1e-6)) ++bad;
       out.mid_nodes.push_back(m);
       out.jacobian_ratio.push_back(ratio);
+    }
+  }
+  if (bad > 0 && paths && layers > 1) {
+    // The general route's layers are a projection, not an exact motion: where it
+    // inverts hexahedra, smooth the inner layers' interior nodes without ever making
+    // a node's worst hexahedron worse (hex_smoothing.h), then measure again.
+    std::vector<std::vector<std::size_t>> quads_of(static_cast<std::size_t>(count));
+    std::vector<std::set<NodeId>> joined(static_cast<std::size_t>(count));
+    for (std::size_t q = 0; q < source.mesh.quads.size(); ++q) {
+      const Quad& quad = source.mesh.quads[q];
+      for (int i = 0; i < 4; ++i) {
+        const NodeId a = compact.at(quad[i]), b = compact.at(quad[(i + 1) % 4]);
+        quads_of[a].push_back(q);
+        joined[a].insert(b);
+        joined[b].insert(a);
+      }
+    }
+    std::vector<bool> on_rim(static_cast<std::size_t>(count), false);
+    for (NodeId n : rim_corners) on_rim[compact.at(n)] = true;
+    // A planar target's interior nodes move too, among their own layer's (their mean
+    // stays on the plane): its quads are the source's mapped, and may be the tangle.
+    const bool flat_target = BRepAdaptor_Surface(index.face(caps.target)).GetType() == GeomAbs_Plane;
+    std::vector<HexSmoothingNode> free;
+    for (int k = 1; k <= layers; ++k) {
+      if (k == layers && !flat_target) break;
+      for (NodeId i = 0; i < count; ++i) {
+        if (on_rim[i]) continue;
+        HexSmoothingNode n;
+        n.node = static_cast<NodeId>(offset + k * count + i);
+        for (NodeId j : joined[i]) n.neighbours.push_back(static_cast<NodeId>(offset + k * count + j));
+        if (k < layers) {
+          n.neighbours.push_back(static_cast<NodeId>(offset + (k - 1) * count + i));
+          n.neighbours.push_back(static_cast<NodeId>(offset + (k + 1) * count + i));
+        }
+        for (std::size_t q : quads_of[i]) {
+          for (int layer_below : {k - 1, k}) {
+            if (layer_below < layers) {
+              n.hexes.push_back(record.first_hex + static_cast<std::int64_t>(q) * layers + layer_below);
+            }
+          }
+        }
+        free.push_back(std::move(n));
+      }
+    }
+    if (smooth_hexahedra(out.nodes, out.hexes, free, 50) > 0) {
+      bad = 0;
+      for (std::size_t k = static_cast<std::size_t>(record.first_hex); k < out.hexes.size(); ++k) {
+        std::array<Vec3, 8> p;
+        for (int i = 0; i < 8; ++i) p[i] = out.nodes[out.hexes[k][i]];
+        out.scaled_jacobian[k] = hex_scaled_jacobian(p);
+        if (!(out.scaled_jacobian[k] > 1e-6)) ++bad;
+        if (!second) continue;
+        // The moved nodes' edges are straight inside the solid: their middles halfway.
+        std::array<NodeId, 12>& m = out.mid_nodes[k];
+        constexpr int kEnds[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                      {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+        std::array<Vec3, 20> all;
+        for (int i = 0; i < 8; ++i) all[i] = p[i];
+        for (int e = 0; e < 12; ++e) {
+          const NodeId a = out.hexes[k][kEnds[e][0]], b = out.hexes[k][kEnds[e][1]];
+          const bool inner = [&] {
+            for (NodeId n : {a, b}) {
+              const long long local = n - offset, layer_of = local / count;
+              if (layer_of > 0 && (layer_of < layers || flat_target) && !on_rim[local % count]) return true;
+            }
+            return false;
+          }();
+          if (inner) out.nodes[m[e]] = 0.5 * (out.nodes[a] + out.nodes[b]);
+          all[8 + e] = out.nodes[m[e]];
+        }
+        out.jacobian_ratio[k] = hex20_jacobian_ratio(all);
+        if (!(out.jacobian_ratio[k] > 1e-6)) ++bad;
+      }
     }
   }
   if (bad > 0) {
