@@ -49,6 +49,10 @@ int run(const SweepCommand& command, std::ostream& out, std::ostream& err) {
   const SweepOutput result = sweep_through_module(command);
   for (const std::string& w : result.read_warnings) err << "tquad: warning: " << one_line(w) << "\n";
   for (const RefusedSolid& r : result.mesh.refused) err << "tquad: warning: not swept: " << one_line(r.reason) << "\n";
+  for (int f : result.mesh.unshared_faces) {
+    err << "tquad: warning: face " << f
+        << " is shared by two swept solids whose nodes there differ: the mesh does not conform across it\n";
+  }
   const auto write_start = std::chrono::steady_clock::now();
   write_hex_file(command.output, result.mesh);
   const double write_seconds = seconds_since(write_start);
@@ -82,6 +86,7 @@ int run(const SweepCommand& command, std::ostream& out, std::ostream& err) {
     nlohmann::ordered_json refused = nlohmann::ordered_json::array();
     for (const RefusedSolid& r : result.mesh.refused) refused.push_back({{"solid", r.solid}, {"reason", r.reason}});
     report["refused_solids"] = refused;
+    report["unshared_faces"] = result.mesh.unshared_faces;
     report["read_warnings"] = result.read_warnings;
     report["seconds"] = {{"read", result.read_seconds},
                          {"source", result.source_seconds},

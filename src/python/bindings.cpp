@@ -391,6 +391,9 @@ py::dict sweep_shape_binding(const std::string& brep_text_or_path, double size, 
   out["jacobian_ratio"] = mesh.second_order() ? py::object(numpy_copy(mesh.jacobian_ratio)) : py::none();
   out["solids"] = solids;
   out["refused_solids"] = refused;
+  py::list unshared;
+  for (int f : mesh.unshared_faces) unshared.append(f);
+  out["unshared_faces"] = unshared;
   out["face_nodes"] = face_nodes;
   out["edge_size"] = result.size;
   out["read_warnings"] = read_warnings;

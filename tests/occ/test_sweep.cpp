@@ -4,7 +4,9 @@
 // with the reason, and kept out of the mesh.
 #include <gtest/gtest.h>
 
+#include <BRepAlgoAPI_BuilderAlgo.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
+#include <TopTools_ListOfShape.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
@@ -37,6 +39,8 @@
 #include <gp_Circ.hxx>
 #include <gp_Pln.hxx>
 
+#include <algorithm>
+#include <array>
 #include <map>
 #include <set>
 #include <utility>
@@ -544,6 +548,59 @@ TEST(Sweep, SidesStackedAlongTheSweepGetTheirShareOfTheLayers) {
   SCOPED_TRACE("countersunk plate");
   const SweepResult c = expect_projected_sweep(countersunk);
   ASSERT_EQ(c.mesh.face_nodes.size(), 8u);  // 2 caps, 4 sides, the bore and the cone
+}
+
+TEST(Sweep, SolidsSharingACapShareItsNodes) {
+  // Two plates with holes, one on the other, as two solids sharing the face between.
+  const TopoDS_Shape lower = holed_plate();
+  gp_Trsf up;
+  up.SetTranslation(gp_Vec(0, 0, 8));
+  const TopoDS_Shape upper = BRepBuilderAPI_Transform(holed_plate(), up).Shape();
+  BRepAlgoAPI_BuilderAlgo fuse;
+  TopTools_ListOfShape arguments;
+  arguments.Append(lower);
+  arguments.Append(upper);
+  fuse.SetArguments(arguments);
+  fuse.Build();
+  ASSERT_TRUE(fuse.IsDone());
+  SweepOptions options;
+  options.face.size = 4.0;
+  for (int order : {1, 2}) {
+    SCOPED_TRACE("order " + std::to_string(order));
+    options.face.order = order;
+    const SweepResult r = sweep_shape(fuse.Shape(), options);
+    ASSERT_EQ(r.mesh.solids.size(), 2u);
+    EXPECT_TRUE(r.mesh.unshared_faces.empty());
+    for (double sj : r.mesh.scaled_jacobian) ASSERT_GT(sj, 1e-6);
+    // No two nodes at one point: the face between is one layer of nodes.
+    std::set<std::array<double, 3>> points;
+    for (const Vec3& p : r.mesh.nodes) points.insert({p.x, p.y, p.z});
+    EXPECT_EQ(points.size(), r.mesh.nodes.size());
+    // Its quads are each in two hexahedra, one of each solid.
+    constexpr int kFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+    std::map<std::array<NodeId, 4>, int> faces;
+    for (const Hex& h : r.mesh.hexes) {
+      for (const auto& f : kFaces) {
+        std::array<NodeId, 4> key{h[f[0]], h[f[1]], h[f[2]], h[f[3]]};
+        std::sort(key.begin(), key.end());
+        ++faces[key];
+      }
+    }
+    long long between = 0;
+    for (const auto& [key, count] : faces) {
+      ASSERT_LE(count, 2);
+      const bool at_eight = std::all_of(key.begin(), key.end(), [&](NodeId n) { return std::abs(r.mesh.nodes[n].z - 8) < 1e-9; });
+      if (at_eight) {
+        EXPECT_EQ(count, 2);
+        ++between;
+      }
+    }
+    EXPECT_EQ(between, r.mesh.solids[0].hex_count / r.mesh.solids[0].layers);
+    if (order == 1) {  // the polygons of the holes' nodes: corners only
+      EXPECT_NEAR(hexes_volume(r.mesh, r.mesh.solids[0]) + hexes_volume(r.mesh, r.mesh.solids[1]),
+                  2 * polygonal_volume(holed_plate(), sweep_shape(holed_plate(), options), 6.0, 8.0), 1e-6);
+    }
+  }
 }
 
 TEST(Sweep, HexahedronMeasures) {

@@ -1,7 +1,9 @@
 #include "core/mesh/hex_mesh.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 
 namespace tquad {
 
@@ -83,6 +85,65 @@ double hex_volume(const std::array<Vec3, 8>& p) {
   return tetra_volume(p[0], p[1], p[2], p[6]) + tetra_volume(p[0], p[2], p[3], p[6]) +
          tetra_volume(p[0], p[3], p[7], p[6]) + tetra_volume(p[0], p[7], p[4], p[6]) +
          tetra_volume(p[0], p[4], p[5], p[6]) + tetra_volume(p[0], p[5], p[1], p[6]);
+}
+
+void merge_shared_face_nodes(HexMesh& mesh) {
+  std::map<int, std::vector<std::size_t>> lists;  // face -> its entries in face_nodes
+  for (std::size_t i = 0; i < mesh.face_nodes.size(); ++i) lists[mesh.face_nodes[i].first].push_back(i);
+  std::vector<NodeId> into(mesh.nodes.size());
+  for (std::size_t n = 0; n < into.size(); ++n) into[n] = static_cast<NodeId>(n);
+  bool merged = false;
+  for (const auto& [face, entries] : lists) {
+    if (entries.size() < 2) continue;
+    std::map<std::array<double, 3>, NodeId> first;
+    for (NodeId n : mesh.face_nodes[entries[0]].second) first.emplace(std::array{mesh.nodes[n].x, mesh.nodes[n].y, mesh.nodes[n].z}, n);
+    bool unmatched = false;
+    for (std::size_t e = 1; e < entries.size(); ++e) {
+      for (NodeId n : mesh.face_nodes[entries[e]].second) {
+        const auto it = first.find(std::array{mesh.nodes[n].x, mesh.nodes[n].y, mesh.nodes[n].z});
+        if (it == first.end()) {
+          unmatched = true;
+        } else if (it->second != n) {
+          into[n] = it->second;
+          merged = true;
+        }
+      }
+    }
+    if (unmatched) mesh.unshared_faces.push_back(face);
+  }
+  if (!merged) return;
+  // A node merged into one merged in turn (a node on two shared faces): follow it.
+  for (std::size_t n = 0; n < into.size(); ++n) {
+    while (into[into[n]] != into[n]) into[n] = into[into[n]];
+  }
+  for (Hex& h : mesh.hexes) {
+    for (NodeId& n : h) n = into[n];
+  }
+  for (auto& m : mesh.mid_nodes) {
+    for (NodeId& n : m) n = into[n];
+  }
+  // Drop the copies: number the nodes still used, in order.
+  std::vector<NodeId> renumber(mesh.nodes.size(), -1);
+  std::vector<Vec3> kept;
+  for (std::size_t n = 0; n < mesh.nodes.size(); ++n) {
+    if (into[n] == static_cast<NodeId>(n)) {
+      renumber[n] = static_cast<NodeId>(kept.size());
+      kept.push_back(mesh.nodes[n]);
+    }
+  }
+  for (std::size_t n = 0; n < mesh.nodes.size(); ++n) renumber[n] = renumber[into[n]];
+  mesh.nodes = std::move(kept);
+  for (Hex& h : mesh.hexes) {
+    for (NodeId& n : h) n = renumber[n];
+  }
+  for (auto& m : mesh.mid_nodes) {
+    for (NodeId& n : m) n = renumber[n];
+  }
+  for (auto& [face, nodes] : mesh.face_nodes) {
+    for (NodeId& n : nodes) n = renumber[n];
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  }
 }
 
 }  // namespace tquad

@@ -56,6 +56,9 @@ struct HexMesh {
   // Second order: per hexahedron, the smallest Jacobian determinant at its 27
   // integration points over the largest (hex20_jacobian_ratio).
   std::vector<double> jacobian_ratio;
+  // CAD faces that two swept solids share whose nodes there differ (a side face of
+  // both, meshed by each): the mesh does not conform across them (merge_shared_face_nodes).
+  std::vector<int> unshared_faces;
 
   bool second_order() const { return !mid_nodes.empty(); }
   int nodes_per_element() const { return second_order() ? 20 : 8; }
@@ -79,6 +82,12 @@ struct HexMesh {
     return e;
   }
 };
+
+// Joins the nodes of a CAD face listed by two or more solids (face_nodes) that lie at
+// the same point (bitwise: a solid swept from a cap another one left copies its
+// nodes), so the solids share them, and drops the copies; a face whose later lists
+// have nodes the first lacks goes to unshared_faces.
+void merge_shared_face_nodes(HexMesh& mesh);
 
 // The worst of the eight corners' scaled Jacobians: the determinant of the three
 // unit edge vectors leaving each corner (Knupp's hexahedron metric); 1 for a cube,

@@ -348,7 +348,8 @@ double shape_diagonal(const TopoDS_Shape& shape) {
 
 // One solid's hexahedra, appended to `out`; throws InputError naming what failed.
 void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, const std::vector<int>& solid_faces,
-                 const SolidCaps& caps, const SweepOptions& options, double tol, HexMesh& out, SweepResult& times) {
+                 const SolidCaps& caps, const SweepOptions& options, double tol, HexMesh& out, SweepResult& times,
+                 std::map<int, ShapeMesh>& cap_meshes) {
   double& size = times.size;
   auto start = std::chrono::steady_clock::now();
   ShapeMeshOptions face = options.face;
@@ -356,7 +357,16 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
   const bool closed = caps.motion.closed;
   if (!closed) face.faces = {caps.source};
   if (closed) face.damaged_faces.clear();  // numbered for the shape, not the profile
-  const ShapeMeshResult source = mesh_shape(closed ? caps.profile : shape, face);
+  // A cap another solid swept already is this solid's source as that solid left it:
+  // the two share its nodes (merge_shared_face_nodes).
+  const auto given = closed ? cap_meshes.end() : cap_meshes.find(caps.source);
+  ShapeMeshResult source;
+  if (given != cap_meshes.end()) {
+    source.mesh = given->second;
+    source.size = size;
+  } else {
+    source = mesh_shape(closed ? caps.profile : shape, face);
+  }
   times.source_seconds += seconds_since(start);
   start = std::chrono::steady_clock::now();
   size = source.size;
@@ -604,6 +614,24 @@ void sweep_solid(const TopoDS_Shape& shape, const ShapeIndex& index, int solid, 
   }
   record.hex_count = static_cast<std::int64_t>(out.hexes.size()) - record.first_hex;
   out.solids.push_back(record);
+  if (!closed) {
+    // Both caps' meshes as this sweep left them, for a solid sharing one.
+    for (const auto& [f, k] : {std::pair(caps.source, 0), std::pair(caps.target, layers)}) {
+      ShapeMesh cap;
+      for (NodeId i = 0; i < count; ++i) cap.nodes.push_back(out.nodes[offset + k * count + i]);
+      for (NodeId i = 0; i < middles; ++i) cap.nodes.push_back(out.nodes[plane_offset + k * middles + i]);
+      for (std::size_t q = 0; q < source.mesh.quads.size(); ++q) {
+        Quad quad;
+        for (int i = 0; i < 4; ++i) quad[i] = compact.at(source.mesh.quads[q][i]);
+        cap.quads.push_back(quad);
+        if (!second) continue;
+        Quad mids;
+        for (int i = 0; i < 4; ++i) mids[i] = static_cast<NodeId>(count + compact_middle.at(source.mesh.mid_nodes[q][i]));
+        cap.mid_nodes.push_back(mids);
+      }
+      cap_meshes.emplace(f, std::move(cap));
+    }
+  }
   times.layer_seconds += seconds_since(start);
   start = std::chrono::steady_clock::now();
   // A return below leaves the node sets' time counted.
@@ -704,6 +732,7 @@ SweepResult sweep_shape(const TopoDS_Shape& shape, const SweepOptions& options) 
   const double diagonal = shape_diagonal(shape);
   const double tol = std::max(1e-6 * diagonal, 1e-9);
   SweepResult result;
+  std::map<int, ShapeMesh> cap_meshes;  // each swept solid's caps, by shape face
   bool given_used = options.source < 0;
   for (int k = 1; k <= solids.Extent(); ++k) {
     const int solid = k - 1;
@@ -712,17 +741,19 @@ SweepResult sweep_shape(const TopoDS_Shape& shape, const SweepOptions& options) 
     const bool holds_given = options.source >= 0 &&
                              std::count(solid_faces.begin(), solid_faces.end(), options.source) > 0;
     if (options.source >= 0 && !holds_given) for_solid.source = for_solid.target = -1;
-    SolidCaps caps;
     std::string refusal;
-    std::optional<SolidFaces> faces;  // read once for both searches below
+    std::optional<SolidFaces> faces;  // read once for the searches below
+    // The first route that fits, with the caps `o` gives if any (then not a full turn).
+    const auto route = [&](const SweepOptions& o, bool given) {
+    SolidCaps caps;
     try {
-      faces.emplace(index, solid_faces);
-      caps = find_caps(index, *faces, for_solid, tol);
+      if (!faces) faces.emplace(index, solid_faces);
+      caps = find_caps(index, *faces, o, tol);
     } catch (const Standard_Failure& e) {
       caps.why_not = std::string("OpenCASCADE failed on its faces (") +
                      (e.GetMessageString() ? e.GetMessageString() : "no message") + ")";
     }
-    if (caps.source < 0 && !holds_given && faces) {
+    if (caps.source < 0 && !given && faces) {
       // Not capped: perhaps a full turn about an axis.
       try {
         SolidCaps turn = full_revolution(index, solids(k), *faces, tol, diagonal);
@@ -738,7 +769,7 @@ SweepResult sweep_shape(const TopoDS_Shape& shape, const SweepOptions& options) 
     if (caps.source < 0 && caps.profile.IsNull() && faces) {
       // No exact motion: perhaps a one-to-one sweep between caps of any shape.
       try {
-        ProjectedCaps general = find_projected_caps(index, solid_faces, for_solid.source, for_solid.target);
+        ProjectedCaps general = find_projected_caps(index, solid_faces, o.source, o.target);
         if (general.source >= 0) {
           caps.source = general.source;
           caps.target = general.target;
@@ -749,6 +780,18 @@ SweepResult sweep_shape(const TopoDS_Shape& shape, const SweepOptions& options) 
       } catch (const Standard_Failure&) {
         caps.why_not += "; nor a one-to-one sweep: OpenCASCADE failed on its faces";
       }
+    }
+    return caps;
+    };
+    SolidCaps caps = route(for_solid, holds_given);
+    if (!holds_given && caps.source >= 0 && caps.profile.IsNull() && cap_meshes.count(caps.target) &&
+        !cap_meshes.count(caps.source)) {
+      // Its target is a cap another solid swept: sweep from it instead, to share it.
+      SweepOptions turned = for_solid;
+      turned.source = caps.target;
+      turned.target = caps.source;
+      SolidCaps other = route(turned, true);
+      if (other.source >= 0) caps = std::move(other);
     }
     if (caps.source < 0 && caps.profile.IsNull()) {
       if (holds_given) {
@@ -763,7 +806,7 @@ SweepResult sweep_shape(const TopoDS_Shape& shape, const SweepOptions& options) 
       const std::size_t nodes = m.nodes.size(), hexes = m.hexes.size(), sets = m.face_nodes.size(),
                         swept = m.solids.size();
       try {
-        sweep_solid(shape, index, solid, solid_faces, caps, for_solid, tol, result.mesh, result);
+        sweep_solid(shape, index, solid, solid_faces, caps, for_solid, tol, result.mesh, result, cap_meshes);
       } catch (const FacesRefusedError& e) {
         refusal = "solid " + std::to_string(solid) + ": its source face was not meshed: " + e.what();
       } catch (const InputError& e) {
@@ -788,6 +831,7 @@ SweepResult sweep_shape(const TopoDS_Shape& shape, const SweepOptions& options) 
     result.mesh.refused.push_back({solid, refusal});
   }
   if (!given_used) throw InputError(face_name(options.source) + " is on no solid of the shape");
+  merge_shared_face_nodes(result.mesh);
   if (result.mesh.solids.empty()) {
     throw InputError("no solid could be swept; the first refused: " + result.mesh.refused.front().reason);
   }

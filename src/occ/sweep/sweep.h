@@ -19,7 +19,10 @@
 //
 // Refused, with the reason and the faces: a revolution's profile touching its axis
 // (wedges); side faces stacked along the sweep; sides that are not four-sided.
-// Solids are swept one by one: solids sharing a face do not share its nodes.
+// Solids are swept one by one, in order; a cap an earlier solid swept is the source of
+// a later one that has it (as that solid left it), and the nodes of a face two solids
+// list at one point are joined (merge_shared_face_nodes): shared caps conform; shared
+// side faces conform only where both sweeps put the same nodes (mesh.unshared_faces).
 #pragma once
 
 #include "core/mesh/hex_mesh.h"

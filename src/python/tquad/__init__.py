@@ -267,9 +267,12 @@ class SweptMesh:
         scaled_jacobian: M float64, each hexahedron's worst corner (1: a cube).
         solids: per swept solid, ``solid``, ``source`` and ``target`` (face indices),
             ``layers``, ``height`` (the longest path), ``first_hex``, ``hex_count``, and
-            ``translation`` (x, y, z) or ``rotation`` {``point``, ``direction``,
-            ``angle`` in radians}.
+            ``translation`` (x, y, z), ``rotation`` {``point``, ``direction``,
+            ``angle`` in radians} or ``projection`` ("least squares").
         refused_solids: with keep_going, ``{"solid", "reason"}`` per solid not swept.
+        unshared_faces: faces two swept solids share whose nodes there differ (the mesh
+            does not conform across them); a cap one solid swept is the next one's
+            source, so shared caps share their nodes.
         face_nodes: per CAD face of a swept solid (0-based), its node indices (int32).
         edge_size: the target edge length used.
         read_warnings: what the reader let through with a warning.
@@ -282,6 +285,7 @@ class SweptMesh:
         self.jacobian_ratio = data["jacobian_ratio"]
         self.solids = list(data["solids"])
         self.refused_solids = list(data["refused_solids"])
+        self.unshared_faces = list(data["unshared_faces"])
         self.face_nodes = dict(data["face_nodes"])
         self.edge_size = float(data["edge_size"])
         self.read_warnings = list(data["read_warnings"])

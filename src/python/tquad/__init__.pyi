@@ -58,6 +58,7 @@ class SweptMesh:
     jacobian_ratio: Optional[np.ndarray]
     solids: List[dict]
     refused_solids: List[dict]
+    unshared_faces: List[int]
     face_nodes: Dict[int, np.ndarray]
     edge_size: float
     read_warnings: List[str]
