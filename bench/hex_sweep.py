@@ -64,8 +64,8 @@ def hex_measures(points, hexes):
     return worst, volume
 
 
-def run_tquad(tquad, path, size, out_path, timeout):
-    cmd = [tquad, "sweep", path, "-o", out_path, "--keep-going", "--report", "json", "--threads", "1"]
+def run_tquad(tquad, path, size, out_path, timeout, extra=()):
+    cmd = [tquad, "sweep", path, "-o", out_path, "--keep-going", "--report", "json", "--threads", "1"] + list(extra)
     if size:
         cmd += ["--size", repr(size)]
     start = time.perf_counter()

@@ -23,7 +23,7 @@ The set (built by FreeCAD's Part module in a child process, into build/sweep_set
 Per solid, at H = D / divisor (D its bounding-box diagonal):
 
 * tquad: `tquad sweep SOLID -o out.json --size H --report json --threads 1`, order 1 and
-  order 2; whole processes timed. Its hexahedra are measured here: scaled Jacobian (the
+  order 2 (with --keep-going: a solid's refusal is the run's), whole processes timed. Its hexahedra are measured here: scaled Jacobian (the
   worst of the 8 corners), the share at or above 0.5, and the volume (order 1: six
   tetrahedra each; order 2: the twenty-node element's Jacobian at its 27 Gauss points)
   against the solid's: FreeCAD's (OpenCASCADE's), except where a face is a rational
@@ -284,19 +284,11 @@ def hex20_volume(points, elements, chunk=50000):
     return float(total)
 
 
-def run_tquad(tquad, path, size, out_path, timeout, order):
-    cmd = [tquad, "sweep", path, "-o", out_path, "--report", "json", "--threads", "1", "--size", repr(size),
-           "--order", str(order)]
-    start = time.perf_counter()
-    try:
-        r = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
-    except subprocess.TimeoutExpired:
-        return {"status": "timeout", "seconds": timeout}
-    seconds = time.perf_counter() - start
-    if r.returncode != 0:
-        return {"status": "refused" if r.returncode == 2 else "failed", "seconds": seconds,
-                "error": (r.stderr.strip().splitlines() or [""])[-1][:400]}
-    return {"status": "ok", "seconds": seconds, "report": json.loads(r.stdout)}
+def read_mesh(path, per):
+    """The written .json mesh's nodes (N x 3) and elements (M x per)."""
+    with open(path) as f:
+        mesh = json.load(f)
+    return mesh, np.array(mesh["nodes"], dtype=float).reshape(-1, 3), np.array(mesh["hexes"], dtype=np.int64).reshape(-1, per)
 
 
 def run_smesh(path, size, timeout):
@@ -331,13 +323,10 @@ def case_job(case, args, work):
                            text=True, timeout=1800, env=dict(os.environ, HOME=work))
         row["volume"] = case["volume"] = float(r.stdout.strip().splitlines()[-1])
     out = os.path.join(work, case["name"] + ".json")
-    first = run_tquad(args.tquad, case["path"], size, out, args.timeout, 1)
+    first = hex_sweep.run_tquad(args.tquad, case["path"], size, out, args.timeout, ["--order", "1"])
     row["tquad"] = {k: v for k, v in first.items() if k != "report"}
     if first["status"] == "ok":
-        with open(out) as f:
-            mesh = json.load(f)
-        points = np.array(mesh["nodes"], dtype=float).reshape(-1, 3)
-        hexes = np.array(mesh["hexes"], dtype=np.int64).reshape(-1, 8)
+        mesh, points, hexes = read_mesh(out, 8)
         sj, volume = hex_sweep.hex_measures(points, hexes)
         solid = first["report"]["solids"][0]
         row.update({"hexes": int(len(hexes)), "min": float(sj.min()), "mean": float(sj.mean()),
@@ -352,13 +341,10 @@ def case_job(case, args, work):
             gcase.update({k: solid[k] for k in ("rotation", "translation") if k in solid})
             row["gmsh"] = hex_sweep.run_gmsh(case["path"], [gcase], size, args.timeout)[0]
         os.remove(out)
-        second = run_tquad(args.tquad, case["path"], size, out, args.timeout, 2)
+        second = hex_sweep.run_tquad(args.tquad, case["path"], size, out, args.timeout, ["--order", "2"])
         row["tquad2"] = {k: v for k, v in second.items() if k != "report"}
         if second["status"] == "ok":
-            with open(out) as f:
-                mesh = json.load(f)
-            points = np.array(mesh["nodes"], dtype=float).reshape(-1, 3)
-            elements = np.array(mesh["hexes"], dtype=np.int64).reshape(-1, 20)
+            _, points, elements = read_mesh(out, 20)
             row["volume_error2"] = hex20_volume(points, elements) / case["volume"] - 1
             os.remove(out)
     if not args.no_smesh:
