@@ -5,6 +5,7 @@ FREECAD_USER_HOME, so these also check that FreeCAD finds it the way a user's Fr
 would. The reference for counts is the tquad module itself on the same BREP text.
 """
 import ast
+import math
 import os
 import sys
 import tempfile
@@ -204,6 +205,27 @@ class MeshObjectTest(unittest.TestCase):
         self.assertTrue(mesh.isDerivedFrom("Fem::FemMeshObject"), "not a FEM mesh object")
         self.assertIs(mesh.Part, part, "Part link (the CalculiX writer reads it)")
         self._assert_same_as_tquad(mesh, part.Shape, 2.5)
+
+    def test_a_twisted_loft_is_swept_into_the_same_hexahedra_as_tquad(self):
+        from freecad.templatequad import make_mesh
+
+        def square(side, z, degrees):
+            a = math.radians(degrees)
+            corners = [(-1, -1), (1, -1), (1, 1), (-1, 1), (-1, -1)]
+            return Part.makePolygon([FreeCAD.Vector(side / 2 * (x * math.cos(a) - y * math.sin(a)),
+                                                    side / 2 * (x * math.sin(a) + y * math.cos(a)), z)
+                                     for x, y in corners])
+
+        loft = Part.makeLoft([square(20, 0, 0), square(12, 20, 30)], True, True)
+        part = self._part(loft, "Loft")
+        mesh = make_mesh(self.doc, part, size=2.0, element_dimension="3D")
+        reference = _tquad().sweep_shape(loft.exportBrepToString(), size=2.0)
+        self.assertEqual(mesh.Proxy.last_error, "", "error after a good sweep")
+        self.assertEqual(list(mesh.RefusedFaces), [], "refused solids")
+        self.assertIn("projection", reference.solids[0], "not the one-to-one route")
+        self.assertEqual(mesh.FemMesh.HexaCount, len(reference.hexes), "hexahedra vs tquad")
+        self.assertEqual(mesh.FemMesh.VolumeCount, mesh.FemMesh.HexaCount, "hexahedra only")
+        self.assertEqual(mesh.FemMesh.NodeCount, len(reference.nodes), "nodes vs tquad")
 
     def test_filleted_box_is_all_quads_and_equals_tquad(self):
         from freecad.templatequad import make_mesh

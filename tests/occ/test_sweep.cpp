@@ -101,7 +101,8 @@ double polygonal_volume(const TopoDS_Shape& shape, const SweepResult& r, double 
 // Every quad face of the hexahedra is in one (the boundary) or two (inside) of them,
 // and the boundary is the two caps' quads and each layer's quads along the source's
 // rim: a conforming quad mesh of the solid's faces.
-void expect_conforming(const HexMesh& mesh) {
+// Each quad face of the hexahedra (its corners, sorted) and how many hold it.
+std::map<std::array<NodeId, 4>, int> quad_face_uses(const HexMesh& mesh) {
   constexpr int kFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
   std::map<std::array<NodeId, 4>, int> faces;
   for (const Hex& h : mesh.hexes) {
@@ -111,6 +112,11 @@ void expect_conforming(const HexMesh& mesh) {
       ++faces[key];
     }
   }
+  return faces;
+}
+
+void expect_conforming(const HexMesh& mesh) {
+  const std::map<std::array<NodeId, 4>, int> faces = quad_face_uses(mesh);
   long long boundary = 0;
   for (const auto& [key, count] : faces) {
     ASSERT_LE(count, 2) << "a quad face in " << count << " hexahedra";
@@ -577,17 +583,8 @@ TEST(Sweep, SolidsSharingACapShareItsNodes) {
     for (const Vec3& p : r.mesh.nodes) points.insert({p.x, p.y, p.z});
     EXPECT_EQ(points.size(), r.mesh.nodes.size());
     // Its quads are each in two hexahedra, one of each solid.
-    constexpr int kFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-    std::map<std::array<NodeId, 4>, int> faces;
-    for (const Hex& h : r.mesh.hexes) {
-      for (const auto& f : kFaces) {
-        std::array<NodeId, 4> key{h[f[0]], h[f[1]], h[f[2]], h[f[3]]};
-        std::sort(key.begin(), key.end());
-        ++faces[key];
-      }
-    }
     long long between = 0;
-    for (const auto& [key, count] : faces) {
+    for (const auto& [key, count] : quad_face_uses(r.mesh)) {
       ASSERT_LE(count, 2);
       const bool at_eight = std::all_of(key.begin(), key.end(), [&](NodeId n) { return std::abs(r.mesh.nodes[n].z - 8) < 1e-9; });
       if (at_eight) {
