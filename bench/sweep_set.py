@@ -333,7 +333,8 @@ def case_job(case, args, work):
                     "good": float((sj >= 0.5).mean()), "bad": int((sj <= 1e-6).sum()),
                     "volume_error": float(volume.sum() / case["volume"] - 1), "layers": solid["layers"],
                     "motion": hex_sweep.motion_of(solid),
-                    "layer_seconds": first["report"].get("seconds", {}).get("layers")})
+                    "layer_seconds": first["report"].get("seconds", {}).get("layers"),
+                    "stage_seconds": first["report"].get("seconds", {})})
         if not args.no_gmsh and row["motion"] in ("translation", "rotation"):
             nodes = np.array(mesh["face_nodes"][str(solid["source"])], dtype=np.int64)
             box = list(points[nodes].min(axis=0)) + list(points[nodes].max(axis=0))
@@ -410,6 +411,15 @@ def markdown(rows, args, info, total_seconds):
         out.append("- SMESH's compute alone over tquad's whole process: geometric mean %.2f (min %.2f, max %.2f) "
                    "on %d solids." % (math.exp(sum(math.log(x) for x in ratios) / len(ratios)), min(ratios),
                                       max(ratios), len(ratios)))
+        computes = [(p["compute_s"], sum(r["stage_seconds"].get(k, 0) for k in ("source", "layers", "node_sets")))
+                    for r, p in smesh_times if r.get("stage_seconds")]
+        computes = [a / b for a, b in computes if b > 0]
+        if computes:
+            out.append("- SMESH's compute over tquad's own (meshing the source, the layers and the node sets, as "
+                       "its report times them; no reading, writing or process start): geometric mean %.2f (min "
+                       "%.2f, max %.2f) on %d solids." % (
+                           math.exp(sum(math.log(x) for x in computes) / len(computes)), min(computes),
+                           max(computes), len(computes)))
     big = [r for r in swept if r["motion"] == "translation" and r["hexes"] >= 1e5]
     if big:
         out.append("- Extrusions of at least 1e5 hexahedra, hexahedra per second: %s (whole process / the layers "
