@@ -331,6 +331,16 @@ def markdown(rows, args, info, total_seconds):
     return "\n".join(out) + "\n"
 
 
+def write_results(args, rows, text, summary_ends):
+    """The raw rows to --json (if given), the page to --markdown; the summary printed."""
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump(rows, f, indent=1)
+    with open(args.markdown, "w") as f:
+        f.write(text)
+    print(text.split(summary_ends)[0])
+
+
 def main(argv):
     if len(argv) > 1 and argv[1] == "--gmsh-case":
         gmsh_case(argv[2], json.loads(argv[3]), float(argv[4]))
@@ -365,13 +375,7 @@ def main(argv):
                                       capture_output=True, text=True).stdout.strip() or "?"
     except OSError:
         info["gmsh"] = "?"
-    if args.json:
-        with open(args.json, "w") as f:
-            json.dump(rows, f, indent=1)
-    text = markdown(rows, args, info, total)
-    with open(args.markdown, "w") as f:
-        f.write(text)
-    print(text.split("## Parts")[0])
+    write_results(args, rows, markdown(rows, args, info, total), "## Parts")
     return 0
 
 

@@ -505,13 +505,7 @@ def main(argv):
                                        env=dict(os.environ, HOME=tempfile.gettempdir())).stdout.strip() or "?"
         except OSError:
             info[key] = "?"
-    if args.json:
-        with open(args.json, "w") as f:
-            json.dump(rows, f, indent=1)
-    text = markdown(rows, args, info, total)
-    with open(args.markdown, "w") as f:
-        f.write(text)
-    print(text.split("## Per solid")[0])
+    hex_sweep.write_results(args, rows, markdown(rows, args, info, total), "## Per solid")
     return 0
 
 
