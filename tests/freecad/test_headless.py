@@ -226,6 +226,7 @@ class MeshObjectTest(unittest.TestCase):
         self.assertEqual(mesh.FemMesh.HexaCount, len(reference.hexes), "hexahedra vs tquad")
         self.assertEqual(mesh.FemMesh.VolumeCount, mesh.FemMesh.HexaCount, "hexahedra only")
         self.assertEqual(mesh.FemMesh.NodeCount, len(reference.nodes), "nodes vs tquad")
+        self.assertIn("least-squares projection", mesh.TemplateTrees[0], "how the solid was swept")
 
     def test_filleted_box_is_all_quads_and_equals_tquad(self):
         from freecad.templatequad import make_mesh

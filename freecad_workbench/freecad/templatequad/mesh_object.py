@@ -341,8 +341,11 @@ class TemplateQuadMesh(StatelessProxy):
             FreeCAD.Console.PrintError(f"TemplateQuad: {obj.Label}: {self.last_error}\n")
             raise
         obj.FemMesh = meshing.to_femmesh_volumes(swept)
-        obj.TemplateTrees = ["Solid%d: face %d to face %d, %d layers, %d hexahedra" % (
-            s["solid"] + 1, s["source"] + 1, s["target"] + 1, s["layers"], s["hex_count"]) for s in swept.solids]
+        obj.TemplateTrees = [meshing.swept_solid_line(s) for s in swept.solids]
+        for face in getattr(swept, "unshared_faces", []):
+            FreeCAD.Console.PrintWarning(
+                f"TemplateQuad: {obj.Label}: Face{face + 1} is shared by two swept solids whose nodes there "
+                "differ: the mesh does not conform across it\n")
         obj.RefusedFaces = meshing.refused_solid_lines(swept)
         obj.RefusedFaceNames = []
         obj.Incomplete = bool(swept.refused_solids)

@@ -278,7 +278,20 @@ def swept_summary(swept) -> str:
     sj = swept.scaled_jacobian
     line = (f"{len(swept.hexes)} hexahedra, {len(swept.nodes)} nodes; {len(swept.solids)} solid(s) swept; "
             f"scaled Jacobian min {float(sj.min()):.3f} avg {float(sj.mean()):.3f}")
-    return line + (f"; {len(swept.refused_solids)} solid(s) not swept" if swept.refused_solids else "")
+    line += f"; {len(swept.refused_solids)} solid(s) not swept" if swept.refused_solids else ""
+    unshared = getattr(swept, "unshared_faces", [])
+    return line + ("; not conforming across " + ", ".join("Face%d" % (f + 1) for f in unshared) if unshared else "")
+
+
+def swept_solid_line(s) -> str:
+    """swept_solid_line(): how one solid was swept, in FreeCAD's 1-based names."""
+    if s["source"] < 0:
+        how = "its profile turned a full turn"
+    else:
+        how = "Face%d to Face%d" % (s["source"] + 1, s["target"] + 1)
+        if "projection" in s:
+            how += " (least-squares projection)"
+    return "Solid%d: %s, %d layers, %d hexahedra" % (s["solid"] + 1, how, s["layers"], s["hex_count"])
 
 
 def refused_solid_lines(swept) -> List[str]:
