@@ -116,6 +116,9 @@ int run_cli(int argc, char** argv) {
                    option_help("keep_going", true, "(exit 2)"));
   mesh->add_flag("--progress", command.progress,
                    option_help("progress", true, "On stderr, the faces in tenths."));
+  mesh->add_flag("-v,--verbose", command.verbose,
+                 "The summary lists each face's template tree (a shape of one face always shows it;\n"
+                 "--report json always has them)");
   mesh->add_option("--read-timeout", command.read.seconds,
                    option_help("read_timeout", true))
       ->type_name("S")

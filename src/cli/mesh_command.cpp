@@ -121,8 +121,12 @@ void print_summary(std::ostream& out, const MeshCommand& command, const ShapeMes
       out << ")";
     }
     out << "\n";
-    for (const FaceMesh& f : mesh.faces) {
-      out << "  face " << f.face << ": " << f.quad_count << " quads, template tree " << f.template_tree << "\n";
+    if (command.verbose) {
+      for (const FaceMesh& f : mesh.faces) {
+        out << "  face " << f.face << ": " << f.quad_count << " quads, template tree " << f.template_tree << "\n";
+      }
+    } else {
+      out << "  (-v lists each face's quads and template tree)\n";
     }
     for (const RefusedFace& f : mesh.refused_faces) {
       out << "  face " << f.face << " refused (" << refusal_code_name(f.code) << "): " << one_line(f.reason) << "\n";

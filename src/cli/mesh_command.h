@@ -22,6 +22,7 @@ struct MeshCommand {
   std::string faces;                 // --faces "0,2,5-7"
   std::vector<std::string> corners;  // --corners "FACE:V1,V2,..."
   bool progress = false;             // --progress: stages and faces on stderr
+  bool verbose = false;              // --verbose: the summary lists each face's template tree
   ReadLimits read;                   // --read-timeout: the CAD reader's child process
 };
 

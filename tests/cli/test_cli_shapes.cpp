@@ -157,10 +157,21 @@ TEST_P(ShapeExamples, EveryFormatIsWritten) {
     SCOPED_TRACE(ext);
     const RunResult r = mesh_ok(shape_file(e.file), "mesh." + ext);
     EXPECT_GT(fs::file_size(path("mesh." + ext)), 0u);
-    // The summary: one face prints its tree, several their count.
+    // The summary: one face prints its tree, several their count (and their trees
+    // with --verbose only, one line each).
     const std::string summary =
         e.faces == 1 ? "template tree " : "faces " + std::to_string(e.faces) + " meshed, 0 refused";
     EXPECT_NE(r.out.find(summary), std::string::npos) << r.out;
+    if (e.faces > 1) {
+      EXPECT_EQ(r.out.find("  face 0: "), std::string::npos) << r.out;
+    }
+  }
+  if (e.faces > 1) {
+    const RunResult v = run_tquad({"mesh", shape_file(e.file), "-o", path("verbose.json"), "--verbose"});
+    ASSERT_EQ(v.exit_status, 0) << v.err;
+    for (int f = 0; f < e.faces; ++f) {
+      EXPECT_NE(v.out.find("  face " + std::to_string(f) + ": "), std::string::npos) << "face " << f;
+    }
   }
 }
 

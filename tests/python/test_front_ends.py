@@ -14,7 +14,7 @@ import unittest
 import tquad
 
 #: Flags of `tquad mesh` that are the command's own, not options of meshing.
-COMMAND_ONLY = {"--output", "--report", "--help"}
+COMMAND_ONLY = {"--output", "--report", "--verbose", "--help"}
 
 
 class OptionsSchema(unittest.TestCase):
