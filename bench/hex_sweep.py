@@ -341,11 +341,10 @@ def write_results(args, rows, text, summary_ends):
     print(text.split(summary_ends)[0])
 
 
-def main(argv):
-    if len(argv) > 1 and argv[1] == "--gmsh-case":
-        gmsh_case(argv[2], json.loads(argv[3]), float(argv[4]))
-        return 0
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+def parse_args(argv, doc, markdown, more=lambda parser: None):
+    """The sweep benches' command line (`more` adds a bench's own options), and where
+    the corpus and the shared parts are."""
+    parser = argparse.ArgumentParser(description=doc.split("\n")[0])
     parser.add_argument("--data-dir", default=corpus.DATA_DIR)
     parser.add_argument("--sets", default="corpus,cad")
     parser.add_argument("--files")
@@ -353,15 +352,24 @@ def main(argv):
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     parser.add_argument("--timeout", type=float, default=300.0)
     parser.add_argument("--no-gmsh", action="store_true")
-    parser.add_argument("--markdown", default=os.path.join(REPO, "bench", "SWEEP.md"))
+    parser.add_argument("--markdown", default=os.path.join(REPO, "bench", markdown))
     parser.add_argument("--json")
     parser.add_argument("--tquad", default=os.path.join(REPO, "build", "bin", "tquad"))
+    more(parser)
     args = parser.parse_args(argv[1:])
     args.archive = os.path.join(args.data_dir, "corpus", corpus.CORPUS_ARCHIVE)
     args.manifest = os.path.join(os.path.dirname(args.archive), "manifest.tsv")
     args.cad_dir = os.path.join(args.data_dir, "cad")
     args.out_dir = os.path.join(REPO, "build", "corpus")
     args.slice = None
+    return args
+
+
+def main(argv):
+    if len(argv) > 1 and argv[1] == "--gmsh-case":
+        gmsh_case(argv[2], json.loads(argv[3]), float(argv[4]))
+        return 0
+    args = parse_args(argv, __doc__, "SWEEP.md")
     parts = corpus.select_parts(args)
     stamp = corpus.engine_stamp(args.tquad)
     start = time.perf_counter()

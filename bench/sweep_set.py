@@ -41,7 +41,6 @@ figures side by side, and the summaries the sweep issue asks for (every extrusio
 revolution swept; the rest at 90%; worst at least each peer's minus 0.02; volume within
 1% at order 1 and 0.1% at order 2; speed as ratios).
 """
-import argparse
 import concurrent.futures
 import datetime
 import json
@@ -470,25 +469,12 @@ def main(argv):
     if len(argv) > 1 and argv[1] == "--gmsh-case":
         hex_sweep.gmsh_case(argv[2], json.loads(argv[3]), float(argv[4]))
         return 0
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--data-dir", default=corpus.DATA_DIR)
-    parser.add_argument("--sets", default="corpus,cad")
-    parser.add_argument("--files")
-    parser.add_argument("--parts", type=int, default=30)
-    parser.add_argument("--divisor", type=float, default=50.0)
-    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
-    parser.add_argument("--timeout", type=float, default=300.0)
-    parser.add_argument("--no-gmsh", action="store_true")
-    parser.add_argument("--no-smesh", action="store_true")
-    parser.add_argument("--markdown", default=os.path.join(REPO, "bench", "SWEEP_SET.md"))
-    parser.add_argument("--json")
-    parser.add_argument("--tquad", default=os.path.join(REPO, "build", "bin", "tquad"))
-    args = parser.parse_args(argv[1:])
-    args.archive = os.path.join(args.data_dir, "corpus", corpus.CORPUS_ARCHIVE)
-    args.manifest = os.path.join(os.path.dirname(args.archive), "manifest.tsv")
-    args.cad_dir = os.path.join(args.data_dir, "cad")
-    args.out_dir = os.path.join(REPO, "build", "corpus")
-    args.slice = None
+
+    def more(parser):
+        parser.add_argument("--parts", type=int, default=30)
+        parser.add_argument("--no-smesh", action="store_true")
+
+    args = hex_sweep.parse_args(argv, __doc__, "SWEEP_SET.md", more)
     stamp = corpus.engine_stamp(args.tquad)
     start = time.perf_counter()
     cases = build_set(args)
