@@ -52,6 +52,9 @@ runs, so that each process has a core, and its own default of all cores with one
     its smallest corner area |e1 x e2| under 1/1000 of its largest (the Jacobian ratio: a
     triangle in effect, whatever its angles); "worst" is the smaller of the two
     measures' minimum;
+  * the normals' agreement: every mesh edge two quads share is counted, and those the two
+    quads run the same way (their normals disagree there: a shell element's top and
+    bottom swap across it);
   * Gmsh (compare_parts' child processes, for the divisors in both --divisors and
     --gmsh-divisors): Blossom = Mesh.Algorithm 6 + Blossom recombination, all-quad = the
     same + subdivision at 2H; the wall time of the whole child process is set against
@@ -507,6 +510,19 @@ def collapsed_quads(points, quads):
     return ~(low >= COLLAPSED_AREA_RATIO * high) | (high == 0)
 
 
+def same_way_edges(quads):
+    """(shared, same_way): mesh edges two or more quads share, and the quad edges that
+    run along a shared edge the way another quad's already does."""
+    if not len(quads):
+        return 0, 0
+    a = quads.reshape(-1)
+    b = np.roll(quads, -1, axis=1).reshape(-1)
+    n = int(quads.max()) + 1
+    _, undirected = np.unique(np.minimum(a, b) * n + np.maximum(a, b), return_counts=True)
+    _, directed = np.unique(a * n + b, return_counts=True)
+    return int((undirected >= 2).sum()), int((directed - 1).sum())
+
+
 def measure_mesh(path, shape, diagonal, surface_check, singular_sine, tquad_faces):
     """Measures every quad of a mesh JSON by both normals (the module docstring);
     tquad_faces is the number of faces tquad's report counts (meshed, refused and absorbed).
@@ -575,6 +591,7 @@ def measure_mesh(path, shape, diagonal, surface_check, singular_sine, tquad_face
     both = own_min if surface is None else np.minimum(own_min, surface.min(axis=1))
     collapsed = collapsed_quads(points, quads)
     bad = (both <= BAD_CORNER) | collapsed
+    result["shared_edges"], result["same_way_edges"] = same_way_edges(quads)
     result.update({
         "bad": int(bad.sum()), "collapsed": int(collapsed.sum()), "under_01": int((both < 0.1).sum()), "under_02": int((both < 0.2).sum()),
         "worst_own": float(own_min.min()) if len(quads) else None,
@@ -1114,6 +1131,13 @@ def summary_lines(results, keys, gmsh_keys):
                    "bad (a corner <= 1e-6, or collapsed) %d."
                    % (key, t["meshed"], t["faces"], share(t["meshed"], t["faces"]), t["absorbed"],
                       share(t["meshed"] + t["absorbed"], t["faces"]), quads, bad))
+        runs = [p for p in results if tquad_ok(p["runs"].get(key)) and "shared_edges" in p["runs"][key]["measure"]]
+        same = [(p["name"], p["runs"][key]["measure"]["same_way_edges"]) for p in runs
+                if p["runs"][key]["measure"]["same_way_edges"]]
+        out.append("D/%s normals: %d shared mesh edges in %d parts, %d run the same way by two quads "
+                   "(normals that disagree)%s."
+                   % (key, sum(p["runs"][key]["measure"]["shared_edges"] for p in runs), len(runs),
+                      sum(n for _, n in same), (": " + ", ".join("%s %d" % s for s in same)) if same else ""))
     for key in keys:
         runs = [p["runs"][key]["measure"] for p in results if tquad_ok(p["runs"].get(key))]
         nodes = sum(m["projected_nodes"] for m in runs)

@@ -283,6 +283,13 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
         << "): the mesh is not connected along them (--report json lists them"
         << (command.shape.sew ? "" : "; --sew joins them") << ")\n";
   }
+  if (!shape_result.orientation_conflicts.empty()) {
+    const auto& first = shape_result.orientation_conflicts.front();
+    err << "tquad: warning: " << shape_result.orientation_conflicts.size()
+        << " pair(s) of faces meet with normals that cannot agree (a one-sided shell, or solids whose faces "
+        << "disagree; first: faces " << first.first << " and " << first.second
+        << "): a shell element's top and bottom swap there (--report json lists them)\n";
+  }
   if (command.report_json) {
     nlohmann::ordered_json report = mesh_report_json(shape, quality);
     report["stage_seconds"] = shape_result.stage_seconds;
@@ -326,6 +333,10 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
       nlohmann::ordered_json unsewn = nlohmann::ordered_json::array();
       for (const UnsewnEdgePair& p : shape_result.unsewn_edges) unsewn.push_back({p.first, p.second});
       report["unsewn_edge_pairs"] = unsewn;
+      report["turned_faces"] = shape_result.turned_faces;
+      nlohmann::ordered_json conflicts = nlohmann::ordered_json::array();
+      for (const auto& [a, b] : shape_result.orientation_conflicts) conflicts.push_back({a, b});
+      report["orientation_conflicts"] = conflicts;
       if (command.shape.sew) report["sewn_edges"] = shape_result.sewn_edges;
     }
     // Reasons of refused faces may come from other libraries: never fail on bad UTF-8.

@@ -9,7 +9,9 @@
 #include <GProp_GProps.hxx>
 #include <Bnd_Box.hxx>
 #include <Standard_Failure.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 
 #include <algorithm>
 #include <atomic>
@@ -26,6 +28,7 @@
 
 #include "core/elapsed.h"
 #include "core/input_error.h"
+#include "core/mesh/shell_orientation.h"
 #include "occ/face/cusp_ends.h"
 #include "occ/intervals/edge_discretization.h"
 #include "occ/model/face_sewing.h"
@@ -498,6 +501,7 @@ class ShapeMeshContext {
         static_cast<std::size_t>(std::count(meshed_.begin(), meshed_.end(), 1)) == mesh.refused_faces.size()) {
       throw InputError("no face could be meshed; the first refused: " + mesh.refused_faces.front().reason);
     }
+    const std::size_t edge_nodes = mesh.nodes.size();  // the shape's edge and vertex nodes come first
     for (int f = 0; f < index_.face_count(); ++f) {
       if (!meshed_[f] || !outcomes_[f].ok) continue;
       const FaceMeshResult& m = outcomes_[f].mesh;
@@ -524,6 +528,26 @@ class ShapeMeshContext {
       result_.smoothing_seconds += m.smoothing_seconds;
     }
     new_node_id_ = drop_unused_nodes(mesh);
+    orient_faces(static_cast<NodeId>(
+        std::count_if(new_node_id_.begin(), new_node_id_.begin() + static_cast<std::ptrdiff_t>(edge_nodes),
+                      [](NodeId n) { return n >= 0; })));
+  }
+
+  // Faces of a solid keep the outward orientation the solid gives them; the others
+  // (shells, face sets, sewn faces) are turned to agree with their neighbours
+  // (shell_orientation.h), and pairs that cannot agree are reported.
+  void orient_faces(NodeId boundary_nodes) {
+    ShapeMesh& mesh = result_.mesh;
+    TopTools_IndexedDataMapOfShapeListOfShape solids_of_face;
+    TopExp::MapShapesAndAncestors(shape_, TopAbs_FACE, TopAbs_SOLID, solids_of_face);
+    std::vector<char> anchored(mesh.faces.size(), 0);
+    for (std::size_t k = 0; k < mesh.faces.size(); ++k) {
+      const int i = solids_of_face.FindIndex(index_.face(mesh.faces[k].face));
+      anchored[k] = i > 0 && !solids_of_face(i).IsEmpty();
+    }
+    ShellOrientation orientation = orient_shells(mesh, boundary_nodes, anchored);
+    result_.turned_faces = std::move(orientation.turned_faces);
+    result_.orientation_conflicts = std::move(orientation.conflicts);
   }
 
   const TopoDS_Shape& shape_;

@@ -134,6 +134,11 @@ struct ShapeMeshResult {
   // With ShapeMeshOptions::sew: the edges sewing merged away (the shape's edge count
   // before, less after).
   int sewn_edges = 0;
+  // Faces outside solids whose quads were turned to agree with their neighbours'
+  // normals, and face pairs that meet with normals that cannot agree (a one-sided
+  // shell, or solids' faces that disagree): shell_orientation.h.
+  std::vector<int> turned_faces;
+  std::vector<std::pair<int, int>> orientation_conflicts;
   double template_seconds = 0;           // summed over faces (all threads)
   double placement_seconds = 0;          // interior nodes onto the surfaces, summed
   double meshing_seconds = 0;            // every face's routes before smoothing, summed

@@ -274,6 +274,12 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
   for (const UnsewnEdgePair& p : result.unsewn_edges) unsewn.append(py::make_tuple(p.first, p.second));
   out["unsewn_edge_pairs"] = unsewn;
   out["sewn_edges"] = result.sewn_edges;
+  py::list turned;
+  for (int f : result.turned_faces) turned.append(f);
+  out["turned_faces"] = turned;
+  py::list conflicts;
+  for (const auto& [a, b] : result.orientation_conflicts) conflicts.append(py::make_tuple(a, b));
+  out["orientation_conflicts"] = conflicts;
   py::list contracted;
   for (int e : result.contracted_edges) contracted.append(e);
   out["contracted_edges"] = contracted;

@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepOffsetAPI_ThruSections.hxx>
@@ -818,6 +819,67 @@ TEST_F(UnsewnCli, FacesTouchingWithoutASharedEdgeAreWarnedAboutAndListed) {
   const nlohmann::json report = nlohmann::json::parse(r.out);
   ASSERT_EQ(report["unsewn_edge_pairs"].size(), 1u);
   EXPECT_EQ(report["unsewn_edge_pairs"][0].size(), 2u);
+}
+
+}  // namespace
+}  // namespace tquad::cli_test
+
+namespace tquad::cli_test {
+namespace {
+
+class ShellNormalsCli : public CliTest {};
+
+// Directed quad edges that two quads run the same way (normals that disagree there),
+// and the volume the quads enclose (positive: normals outward).
+std::pair<int, double> same_way_edges_and_volume(const nlohmann::json& mesh) {
+  std::map<std::pair<long, long>, int> runs;
+  double volume = 0;
+  auto node = [&](long i) { return mesh["nodes"][i].get<std::vector<double>>(); };
+  for (const auto& q : mesh["quads"]) {
+    for (int i = 0; i < 4; ++i) ++runs[{q[i].get<long>(), q[(i + 1) % 4].get<long>()}];
+    const auto p0 = node(q[0]), p1 = node(q[1]), p2 = node(q[2]), p3 = node(q[3]);
+    auto triple = [](const std::vector<double>& a, const std::vector<double>& b, const std::vector<double>& c) {
+      return a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+    };
+    volume += (triple(p0, p1, p2) + triple(p0, p2, p3)) / 6.0;
+  }
+  int same = 0;
+  for (const auto& [edge, count] : runs) same += count - 1;
+  return {same, volume};
+}
+
+TEST_F(ShellNormalsCli, SewnFacesOfMixedOrientationAreTurnedOutward) {
+  // A box's six faces as separate copies, every other one reversed: once sewn, the
+  // reversed ones' quads are turned so that the closed shell faces outward.
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(10, 20, 30).Shape();
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(box, TopAbs_FACE, faces);
+  BRep_Builder builder;
+  TopoDS_Compound loose;
+  builder.MakeCompound(loose);
+  for (int i = 1; i <= faces.Extent(); ++i) {
+    const TopoDS_Shape copy = BRepBuilderAPI_Copy(faces(i)).Shape();
+    builder.Add(loose, i % 2 == 0 ? copy.Reversed() : copy);
+  }
+  const std::string file = path("loose_faces.brep");
+  ASSERT_TRUE(BRepTools::Write(loose, file.c_str()));
+  const RunResult r = run_tquad({"mesh", file, "--sew", "--size", "5", "-o", path("sewn.json"), "--report", "json"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const nlohmann::json report = nlohmann::json::parse(r.out);
+  EXPECT_EQ(report["turned_faces"], nlohmann::json::array({1, 3, 5}));
+  EXPECT_EQ(report["orientation_conflicts"].size(), 0u);
+  const auto [same, volume] = same_way_edges_and_volume(nlohmann::json::parse(read_text(path("sewn.json"))));
+  EXPECT_EQ(same, 0);
+  EXPECT_NEAR(volume, 6000.0, 1e-6);
+  // The solid itself: its faces keep the solid's outward orientation, none turned.
+  const std::string solid = path("box.brep");
+  ASSERT_TRUE(BRepTools::Write(box, solid.c_str()));
+  const RunResult s = run_tquad({"mesh", solid, "--size", "5", "-o", path("solid.json"), "--report", "json"});
+  ASSERT_EQ(s.exit_status, 0) << s.err;
+  EXPECT_EQ(nlohmann::json::parse(s.out)["turned_faces"].size(), 0u);
+  const auto [solid_same, solid_volume] = same_way_edges_and_volume(nlohmann::json::parse(read_text(path("solid.json"))));
+  EXPECT_EQ(solid_same, 0);
+  EXPECT_NEAR(solid_volume, 6000.0, 1e-6);
 }
 
 }  // namespace

@@ -323,6 +323,30 @@ class MeshObjectTest(unittest.TestCase):
         self.assertEqual(apart.FemMesh.FaceCount, whole.FemMesh.FaceCount, "sewn: the box's quads")
         self._assert_same_as_tquad(apart, apart_part.Shape, 5.0, sew=True)
 
+    def test_sewn_faces_of_mixed_orientation_all_face_outward(self):
+        # Face copies, every other one reversed (as trimmed surfaces of an IGES file
+        # come): once sewn, every element faces away from the box's centre, and the
+        # report view names the faces whose elements were turned.
+        from freecad.templatequad import make_mesh
+        box = Part.makeBox(10, 20, 30)
+        faces = [f.copy() if i % 2 == 0 else f.copy().reversed() for i, f in enumerate(box.Faces)]
+        part = self._part(Part.Compound(faces), "MixedFaces")
+        messages = []
+        print_message = FreeCAD.Console.PrintMessage
+        FreeCAD.Console.PrintMessage = lambda text: messages.append(str(text))
+        try:
+            obj = make_mesh(self.doc, part, size=5.0, sew=True)
+        finally:
+            FreeCAD.Console.PrintMessage = print_message
+        femmesh = obj.FemMesh
+        centre = FreeCAD.Vector(5, 10, 15)
+        for element in femmesh.Faces:
+            a, b, c, d = (femmesh.getNodeById(n) for n in femmesh.getElementNodes(element))
+            normal = (c - a).cross(d - b)
+            outward = (a + b + c + d) * 0.25 - centre
+            self.assertGreater(normal.dot(outward), 0, f"element {element} faces inwards")
+        self.assertTrue(any("Face2, Face4, Face6: elements turned" in m for m in messages), messages)
+
     def test_changing_size_marks_the_mesh_out_of_date_until_meshed_again(self):
         from freecad.templatequad import make_mesh
         part = self._part(self._filleted_box(), "FilletedBox")

@@ -88,6 +88,10 @@ class MeshShapeTest(unittest.TestCase):
         self.assertEqual(plain.sewn_edges, 0)
         self.assertEqual(sewn.sewn_edges, 0)
         self.assertEqual(sewn.unsewn_edge_pairs, [])
+        # Sewn, its faces belong to no solid: they keep their turn because the closed
+        # shell already faces outward, none is turned and none conflicts.
+        self.assertEqual(sewn.turned_faces, [])
+        self.assertEqual(sewn.orientation_conflicts, [])
         self.assertTrue(np.array_equal(plain.quads, sewn.quads))
         self.assertTrue(np.array_equal(plain.nodes, sewn.nodes))
 

@@ -315,6 +315,11 @@ class TemplateQuadMesh(StatelessProxy):
         unsewn = meshing.unsewn_warning(obj.UnsewnEdges, obj.Sew)
         if unsewn:
             FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {unsewn}\n")
+        turned, disagreeing = meshing.orientation_messages(mesh)
+        if turned:
+            FreeCAD.Console.PrintMessage(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {turned}\n")
+        if disagreeing:
+            FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {disagreeing}\n")
         absorbed = meshing.absorbed_message(mesh)
         if absorbed:
             FreeCAD.Console.PrintMessage(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {absorbed}\n")

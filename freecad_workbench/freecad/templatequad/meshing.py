@@ -323,6 +323,21 @@ def unsewn_warning(pairs: int, sew: bool) -> str:
             f"are not sewn there): the mesh is not connected along them{advice}")
 
 
+def orientation_messages(mesh):
+    """orientation_messages(): (message, warning), each "" for none. The message names
+    the faces outside solids whose elements were turned so that neighbouring faces
+    agree on their normals (a shell's top and bottom, a pressure's side); the warning
+    names faces that meet with normals that cannot agree (a one-sided shell)."""
+    turned = [f"Face{f + 1}" for f in getattr(mesh, "turned_faces", [])]
+    conflicts = [f"Face{a + 1} and Face{b + 1}" for a, b in getattr(mesh, "orientation_conflicts", [])]
+    message = (f"{', '.join(turned)}: elements turned to agree with their neighbours' normals"
+               if turned else "")
+    warning = (f"normals cannot agree where {'; '.join(conflicts)} meet (a one-sided shell, or "
+               f"solids whose faces disagree): a shell element's top and bottom swap there"
+               if conflicts else "")
+    return message, warning
+
+
 def absorbed_message(mesh) -> str:
     """absorbed_message(): what a user reads about faces absorbed as strips ("" for
     none): they have no elements of their own, so a constraint on them alone finds

@@ -94,6 +94,11 @@ class Mesh:
             is not connected along them (``sew=True`` joins them).
         sewn_edges: for a shape meshed with ``sew=True``, the edges merged into
             their neighbours; else 0.
+        turned_faces: for a shape, faces outside solids whose quads were turned so
+            that faces meeting at an edge agree on their normals (outward on a
+            closed shell, else the larger area's side).
+        orientation_conflicts: for a shape, pairs of faces meeting with normals
+            that cannot agree (a one-sided shell, or solids' faces that disagree).
         read_warnings: for a shape file, what the reader read past without losing
             any of the shape (an entity's name written as ``$``), a line each.
         contracted_edges: for a shape, the edges far shorter than the size (under
@@ -125,6 +130,8 @@ class Mesh:
         self.changed_edges: List[dict] = data.get("changed_edges", [])
         self.unsewn_edge_pairs: List[Tuple[int, int]] = data.get("unsewn_edge_pairs", [])
         self.sewn_edges: int = data.get("sewn_edges", 0)
+        self.turned_faces: List[int] = data.get("turned_faces", [])
+        self.orientation_conflicts: List[Tuple[int, int]] = data.get("orientation_conflicts", [])
         self.contracted_edges: List[int] = data.get("contracted_edges", [])
         self.absorbed_faces: List[dict] = data.get("absorbed_faces", [])
         self.bad_quad_faces: List[dict] = data.get("bad_quad_faces", [])

@@ -21,6 +21,8 @@ class Mesh:
     changed_edges: List[dict]
     unsewn_edge_pairs: List[Tuple[int, int]]
     sewn_edges: int
+    turned_faces: List[int]
+    orientation_conflicts: List[Tuple[int, int]]
     contracted_edges: List[int]
     absorbed_faces: List[dict]
     bad_quad_faces: List[dict]
