@@ -55,6 +55,8 @@ CadInputMesh mesh_cad_input(const MeshCommand& command, std::ostream& err) {
     }
   }
   options.corners = parse_corner_specs(corner_specs);
+  for (const std::string& entry : command.sizes_at) options.local_sizes.push_back(parse_local_size(entry));
+  check_growth_rate(options.growth_rate);
   const auto reading = std::chrono::steady_clock::now();
   const ReadShape read = read_shape_isolated(command.input, command.read);
   const double read_seconds = seconds_since(reading);

@@ -112,6 +112,12 @@ int run_cli(int argc, char** argv) {
                                "For example --corners 3:0,4,7,2 (repeat for more faces). Or 'best' (a boundary "
                                "file's loop too): " + tquad::mesh_option("best_corners").help))
       ->type_name("FACE:V1,V2,...");
+  mesh->add_option("--size-at", command.sizes_at,
+                   option_help("sizes", true, "For example --size-at face3:0.5 (repeat for more)."))
+      ->type_name("ENTITY:H");
+  mesh->add_option("--growth-rate", command.shape.growth_rate, option_help("growth_rate", true))
+      ->type_name("G")
+      ->capture_default_str();
   mesh->add_flag("--keep-going", command.shape.keep_going,
                    option_help("keep_going", true, "(exit 2)"));
   mesh->add_flag("--progress", command.progress,

@@ -283,6 +283,10 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
         << "): the mesh is not connected along them (--report json lists them"
         << (command.shape.sew ? "" : "; --sew joins them") << ")\n";
   }
+  if (kind == InputKind::shape && shape_result.diagonal > 0 && shape_result.size > shape_result.diagonal) {
+    err << "tquad: warning: the size " << shape_result.size << " is larger than the shape, "
+        << shape_result.diagonal << " across: each edge gets the fewest segments its curvature and faces allow\n";
+  }
   if (!shape_result.orientation_conflicts.empty()) {
     const auto& first = shape_result.orientation_conflicts.front();
     err << "tquad: warning: " << shape_result.orientation_conflicts.size()
@@ -297,6 +301,7 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
       report["nodes_per_quad"] = shape.nodes_per_element();  // 4, or 8 at --order 2
       if (shape.second_order()) report["straightened_mid_nodes"] = shape_result.straightened_mid_nodes;
       report["edge_size"] = shape_result.size;
+      report["shape_diagonal"] = shape_result.diagonal;
       report["refinement_rounds"] = shape_result.refinement_rounds;
       report["refused_per_round"] = shape_result.refused_per_round;
       report["kept_round"] = shape_result.kept_round;

@@ -21,6 +21,7 @@ struct MeshCommand {
   ShapeMeshOptions shape;
   std::string faces;                 // --faces "0,2,5-7"
   std::vector<std::string> corners;  // --corners "FACE:V1,V2,..."
+  std::vector<std::string> sizes_at;  // --size-at "face3:0.5" (local_sizes.h)
   bool progress = false;             // --progress: stages and faces on stderr
   bool verbose = false;              // --verbose: the summary lists each face's template tree
   ReadLimits read;                   // --read-timeout: the CAD reader's child process

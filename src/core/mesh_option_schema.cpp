@@ -56,6 +56,13 @@ const std::vector<MeshOptionField>& mesh_option_schema() {
       {"sew", "--sew", "Sew", "bool", "False",
        "First join faces that touch without sharing their edge (an IGES file of trimmed "
        "surfaces), so the mesh is connected there; face numbers stay the shape's."},
+      {"sizes", "--size-at", "MeshRegionList", "Optional[Dict[str, float]]", "None",
+       "Local target edge lengths under the size, per face, edge or vertex (0-based), as "
+       "face3, edge7 or vertex1 with its length: the edges of a face take its size, and the "
+       "sizes around grow from there by at most the growth rate per segment."},
+      {"growth_rate", "--growth-rate", "GrowthRate", "float", "1.3",
+       "The most one segment may be longer than its neighbour where local sizes make them "
+       "differ (over 1, at most 10)."},
   };
   return fields;
 }

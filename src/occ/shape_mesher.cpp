@@ -29,6 +29,7 @@
 #include "core/elapsed.h"
 #include "core/input_error.h"
 #include "core/mesh/shell_orientation.h"
+#include "core/templates/count_fitting.h"
 #include "occ/face/cusp_ends.h"
 #include "occ/intervals/edge_discretization.h"
 #include "occ/model/face_sewing.h"
@@ -72,18 +73,21 @@ constexpr double kEstimateOverLimit = 1.0;
 
 // About how many quads the faces take at `size`: each face's area / size^2 (a square
 // grid of that size). A face whose area OpenCASCADE cannot integrate counts 0 here.
-double estimated_quads(const ShapeIndex& index, const std::vector<char>& faces, double size) {
-  double area = 0;
+// `face_sizes`: per face, its own size where local sizes set one (or empty: `size`).
+double estimated_quads(const ShapeIndex& index, const std::vector<char>& faces, double size,
+                       const std::vector<double>& face_sizes) {
+  double quads = 0;
   for (int f = 0; f < index.face_count(); ++f) {
     if (!faces[f]) continue;
     try {
       GProp_GProps properties;
       BRepGProp::SurfaceProperties(index.face(f), properties);
-      if (std::isfinite(properties.Mass())) area += std::abs(properties.Mass());
+      const double h = face_sizes.empty() ? size : face_sizes[f];
+      if (std::isfinite(properties.Mass())) quads += std::abs(properties.Mass()) / (h * h);
     } catch (const Standard_Failure&) {
     }
   }
-  return area / (size * size);
+  return quads;
 }
 
 std::vector<char> meshed_faces(const ShapeIndex& index, const std::vector<int>& faces) {
@@ -252,6 +256,7 @@ class ShapeMeshContext {
     meshed_ = meshed_faces(index_, options_.faces);
     const Box3 box = checked_shape_box(shape_);  // checked even when the size is given
     const double diagonal = box.diagonal();
+    result_.diagonal = diagonal;
     if (options_.size > 0 && options_.min_size > options_.size) {
       char text[96];
       std::snprintf(text, sizeof text, "the minimum element size (%g) is larger than the element size (%g)",
@@ -273,6 +278,27 @@ class ShapeMeshContext {
     for (const auto& [f, why] : damaged_) if (f >= 0 && f < index_.face_count()) to_mesh_[f] = 0;
     edge_floor_ = edge_turn_minimums(index_, usable);
     sized_ = edge_segment_counts(index_, result_.size, edge_floor_, lengths_, usable);
+    // Local sizes only refine: each edge's count from its graded field, at least its
+    // turning minimum; strips and short edges are then judged by the smallest size.
+    check_growth_rate(options_.growth_rate);
+    double judged_size = result_.size;
+    goal_lengths_ = lengths_;
+    if (!options_.local_sizes.empty()) {
+      const SizeField field = local_size_field(index_, result_.size, options_.min_size, options_.local_sizes,
+                                               options_.growth_rate, lengths_);
+      for (int e = 0; e < index_.edge_count(); ++e) {
+        if (!usable[e] || !(lengths_[e] > 0)) continue;
+        const double goal = graded_segments(field.edges[e], lengths_[e]);
+        check_goal(goal, "edge " + std::to_string(e));
+        const int graded = field.edges[e].graded() ? static_cast<int>(std::ceil(goal - 1e-9))
+                                                   : static_cast<int>(std::lround(goal));
+        sized_[e] = std::max(edge_floor_[e], std::max(1, graded));
+        goal_lengths_[e] = std::max(1, graded) * result_.size;
+      }
+      spacings_.grading = field.edges;
+      face_sizes_ = field.faces;
+      judged_size = field.smallest;
+    }
     // Faces narrower than the contraction bound are absorbed (strip_absorption.h) and
     // edges far shorter than the size become one node (edge_contraction.h), before
     // any face's sides are counted.
@@ -280,8 +306,8 @@ class ShapeMeshContext {
     // would keep its neighbours' short end edges.
     std::vector<char> whole(index_.face_count(), 1);
     for (const auto& [f, why] : damaged_) if (f >= 0 && f < index_.face_count()) whole[f] = 0;
-    result_.absorbed_strips = contract_and_absorb(index_, strips_to_absorb(index_, whole, lengths_, usable, result_.size),
-                                                  lengths_, usable, result_.size, result_.contracted_edges);
+    result_.absorbed_strips = contract_and_absorb(index_, strips_to_absorb(index_, whole, lengths_, usable, judged_size),
+                                                  lengths_, usable, judged_size, result_.contracted_edges);
     const std::vector<char> requested = to_mesh_;
     for (const AbsorbedStrip& strip : result_.absorbed_strips) meshed_[strip.face] = to_mesh_[strip.face] = 0;
     if (std::count(meshed_.begin(), meshed_.end(), 1) == 0) {
@@ -333,7 +359,8 @@ class ShapeMeshContext {
     // No change goes below the curvature and three-edge-face bounds or a refinement.
     std::vector<int> floor = edge_floor_;
     for (int e = 0; e < index_.edge_count(); ++e) floor[e] = std::max(floor[e], minimum_[e]);
-    intervals_ = assign_shape_intervals(index_, to_mesh_, lengths_, result_.size, segments_, floor, wires_, &spacings_);
+    intervals_ = assign_shape_intervals(index_, to_mesh_, goal_lengths_, result_.size, segments_, floor, wires_,
+                                        &spacings_);
     // Before anything is allocated: a face of E boundary segments has at least
     // E / 2 - 1 quads (nodes = 1 + quads + E / 2 - holes, and its E boundary nodes).
     long long at_least = 0;
@@ -356,7 +383,7 @@ class ShapeMeshContext {
     }
     const double refused_above = kEstimateOverLimit * static_cast<double>(options_.templates.max_quads);
     if (at_most > refused_above) {
-      const double estimate = estimated_quads(index_, to_mesh_, result_.size);
+      const double estimate = estimated_quads(index_, to_mesh_, result_.size, face_sizes_);
       if (estimate > refused_above) {
         char text[96];
         std::snprintf(text, sizeof text, "the faces' area at size %.3g gives about %.3g quads", result_.size, estimate);
@@ -557,11 +584,15 @@ class ShapeMeshContext {
   ShapeMeshResult result_;
   std::vector<char> meshed_, needed_;
   std::vector<double> lengths_;
+  // The lengths the interval assignment aims by (its goal is length / size): the
+  // edges' own, or under local sizes each edge's graded count times the size.
+  std::vector<double> goal_lengths_;
   std::vector<int> sized_, minimum_, segments_, edge_floor_;
   std::map<int, std::string> damaged_;  // faces refused before meshing, with the reason
   std::vector<char> to_mesh_;           // meshed_ without the damaged faces
   std::vector<EdgeNodes> edges_;
   std::vector<EdgeNodes> previous_edges_;  // the last round's, while meshing the next
+  std::vector<double> face_sizes_;         // per face, its own size under local sizes (or empty)
   EdgeSpacings spacings_;                  // each edge's last spacing, for the next rounds
   IntervalReport intervals_;               // the round's interval assignment
   int aligned_bands_ = 0;                  // the round's aligned bands (band_alignment.h)

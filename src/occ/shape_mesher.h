@@ -27,6 +27,7 @@
 #include "core/templates/mesher.h"
 #include "core/mesh/shape_mesh.h"
 #include "occ/intervals/interval_assignment.h"
+#include "occ/intervals/local_sizes.h"
 #include "occ/model/strip_absorption.h"
 #include "occ/model/unsewn_edges.h"
 
@@ -65,6 +66,10 @@ struct ShapeMeshOptions {
   // The target edge length never goes below it (0: no floor), whether given or
   // automatic; curvature and short edges may still give shorter segments.
   double min_size = 0.0;
+  // Target edge lengths per face, edge or vertex (local_sizes.h), under the global
+  // one; neighbouring segments then differ by at most growth_rate.
+  std::vector<LocalSize> local_sizes;
+  double growth_rate = kDefaultGrowthRate;
   // Faces to mesh (0-based); empty: all.
   std::vector<int> faces;
   // Per face, the shape vertices to use as corners (2 to 4).
@@ -103,6 +108,7 @@ struct ShapeMeshOptions {
 struct ShapeMeshResult {
   ShapeMesh mesh;
   double size = 0.0;                     // the target size used
+  double diagonal = 0.0;                 // the shape's bounding-box diagonal (the default size's D)
   std::vector<IntervalChange> changes;   // edge counts changed by the interval assignment
   long long projected_faces = 0;         // faces meshed by the 3D route
   long long inverted = 0;                // quads still inverted after repair

@@ -142,6 +142,17 @@ class WorkbenchGuiTest(unittest.TestCase):
         panel.reject()
         self.assertEqual(mesh.FemMesh.FaceCount, before, "cancel re-meshes the old values")
 
+        # A value set in the property editor while the panel is open survives OK; the
+        # field changed in the panel is applied with it.
+        panel = TemplateQuadTaskPanel(mesh)
+        mesh.CharacteristicLengthMax = 3.0
+        panel.smooth.setChecked(not mesh.Smooth)
+        smooth = panel.smooth.isChecked()
+        self.assertTrue(panel.accept())
+        self.assertEqual(mesh.CharacteristicLengthMax.Value, 3.0, "the property editor's size is kept")
+        self.assertEqual(mesh.Smooth, smooth, "the panel's change is applied")
+        self.assertEqual(mesh.ElementSizeUsed.Value, 3.0, "and meshed with")
+
     def test_task_panel_tells_of_unsewn_faces_and_sews_them(self):
         # A box's faces copied one by one share no edge (an IGES import of trimmed
         # surfaces): the panel says the mesh is not connected, and its Sew box joins them.

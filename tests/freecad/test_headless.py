@@ -523,11 +523,24 @@ class MeshObjectTest(unittest.TestCase):
         from freecad.templatequad import make_mesh
         part = self._part(Part.makeBox(10, 20, 30), "Box")
         mesh = make_mesh(self.doc, part, size=2.0)
-        mesh.Corners = ["Face1:Vertex1"]
-        mesh.Proxy.request_mesh(mesh)
-        self.assertIn("Invalid", mesh.State, "a failed mesh must mark the object invalid")
+        mesh.Corners = ["Face1:Vertex1,Vertex99"]  # well formed; the part has 8 vertices
+        printed = []
+        print_error = FreeCAD.Console.PrintError
+        FreeCAD.Console.PrintError = lambda text: printed.append(str(text))
+        try:
+            mesh.Proxy.request_mesh(mesh)
+        finally:
+            FreeCAD.Console.PrintError = print_error
+        # A user's error raises nothing into FreeCAD's recompute (which would print the
+        # whole Python traceback): one line in the report view, the reason in Quality.
+        self.assertNotIn("Invalid", mesh.State, "no exception reached the recompute")
+        self.assertEqual(len(printed), 1, printed)
+        self.assertIn("Face1", printed[0])
+        self.assertIn("does not exist", printed[0])
+        self.assertEqual(printed[0].count("\n"), 1, "one line")
+        self.assertTrue(mesh.Quality.startswith("not meshed: "), mesh.Quality)
         self.assertEqual(mesh.FemMesh.FaceCount, 0, "a failed mesh must not keep old elements")
-        self.assertIn("2, 3 or 4 corners", mesh.Proxy.last_error, mesh.Proxy.last_error)
+        self.assertIn("does not exist", mesh.Proxy.last_error, mesh.Proxy.last_error)
         # Later recomputes do not mesh it again, nor print its error again.
         errors = []
         print_error = FreeCAD.Console.PrintError
@@ -540,9 +553,91 @@ class MeshObjectTest(unittest.TestCase):
             FreeCAD.Console.PrintError = print_error
         self.assertEqual(errors, [], "the error is not printed again")
         self.assertTrue(mesh.OutOfDate)
-        self.assertIn("2, 3 or 4 corners", mesh.Proxy.last_error, "the reason is still there")
+        self.assertIn("does not exist", mesh.Proxy.last_error, "the reason is still there")
         with self.assertRaises(ValueError, msg="make_mesh raises by default"):
             make_mesh(self.doc, part, corners=["Face1:Vertex1"])
+
+    def test_a_mesh_region_on_a_hole_refines_it_and_grades_out(self):
+        # FEM's own Mesh region (ObjectsFem.makeMeshRegion) on a TemplateQuad mesh: the
+        # hole of a 100 x 60 x 5 plate at 0.5 under a global 5 gets about 2 pi 8 / 0.5
+        # segments on each rim, and the mesh stays under a fifth of a uniform 0.5 mesh.
+        import ObjectsFem
+        from freecad.templatequad import make_mesh, meshing
+        plate = Part.makeBox(100, 60, 5).cut(
+            Part.makeCylinder(8, 7, FreeCAD.Vector(50, 30, -1), FreeCAD.Vector(0, 0, 1)))
+        part = self._part(plate, "HoledPlate")
+        mesh = make_mesh(self.doc, part, size=5.0)
+        coarse = mesh.FemMesh.FaceCount
+        hole = next(i for i, f in enumerate(plate.Faces) if f.Surface.TypeId == "Part::GeomCylinder")
+        region = ObjectsFem.makeMeshRegion(self.doc, mesh, 0.5)
+        region.References = [(part, (f"Face{hole + 1}",))]
+        self.assertEqual(meshing.region_sizes(mesh.MeshRegionList), {f"face{hole}": 0.5})
+        mesh.Proxy.request_mesh(mesh)
+        self.assertEqual(mesh.Proxy.last_error, "")
+        fem = mesh.FemMesh
+        for edge in plate.Faces[hole].Edges:
+            if edge.Curve.TypeId != "Part::GeomCircle":
+                continue
+            on_rim = len(fem.getNodesByEdge(edge))
+            self.assertAlmostEqual(on_rim, 2 * math.pi * 8 / 0.5, delta=4, msg="rim nodes")
+        uniform = make_mesh(self.doc, part, size=0.5)
+        self.assertGreater(fem.FaceCount, 2 * coarse, "the hole is finer")
+        self.assertLess(5 * fem.FaceCount, uniform.FemMesh.FaceCount, "far under a uniform fine mesh")
+
+    def test_a_size_larger_than_the_part_says_so(self):
+        from freecad.templatequad import make_mesh
+        part = self._part(Part.makeBox(10, 20, 30), "Box")
+        warnings = []
+        print_warning = FreeCAD.Console.PrintWarning
+        FreeCAD.Console.PrintWarning = lambda text: warnings.append(str(text))
+        try:
+            make_mesh(self.doc, part, size=1e6)
+        finally:
+            FreeCAD.Console.PrintWarning = print_warning
+        self.assertTrue(any("the element size 1e+06 mm is larger than the part (37.42 mm across)" in w
+                            for w in warnings), warnings)
+        warnings.clear()
+        FreeCAD.Console.PrintWarning = lambda text: warnings.append(str(text))
+        try:
+            make_mesh(self.doc, part, size=5.0)
+        finally:
+            FreeCAD.Console.PrintWarning = print_warning
+        self.assertFalse(any("larger than the part" in w for w in warnings), warnings)
+
+    def test_a_selection_of_edges_says_the_whole_part_is_meshed(self):
+        from freecad.templatequad import commands
+        self.assertEqual(commands.split_selection(["Face2", "Edge3", "Face5", "Vertex1"]),
+                         (["Face2", "Face5"], ["Edge3", "Vertex1"]))
+        self.assertEqual(commands.selection_note("Box", [], ["Edge3", "Vertex1"]),
+                         "Edge3, Vertex1 of Box selected: not faces, so the whole of Box is meshed "
+                         "(select faces to mesh only them)")
+        self.assertEqual(commands.selection_note("Box", ["Face2"], ["Edge3"]), "", "faces are meshed")
+        self.assertEqual(commands.selection_note("Box", [], []), "", "the part itself")
+
+    def test_wrong_inputs_are_said_when_set_and_put_back(self):
+        from freecad.templatequad import make_mesh
+        part = self._part(Part.makeBox(10, 20, 30), "Box")
+        mesh = make_mesh(self.doc, part, size=5.0)
+        cases = [("T4Ratio", 0, 2, "must be at least 2"),
+                 ("Layers", -3, 0, "0 (layers from the element size) or more"),
+                 ("Faces", ["Face99"], [], "Face99 does not exist; the part has Face1..Face6"),
+                 ("Corners", ["Face1:Vertex1"], [], "2, 3 or 4 corners")]
+        for prop, wrong, kept, reason in cases:
+            with self.subTest(prop):
+                printed = []
+                print_error = FreeCAD.Console.PrintError
+                FreeCAD.Console.PrintError = lambda text: printed.append(str(text))
+                try:
+                    setattr(mesh, prop, wrong)
+                finally:
+                    FreeCAD.Console.PrintError = print_error
+                self.assertEqual(getattr(mesh, prop), kept, "put back")
+                self.assertEqual(len(printed), 1, printed)
+                self.assertIn(prop, printed[0])
+                self.assertIn(reason, printed[0])
+        # A right value is taken silently.
+        mesh.T4Ratio = 3
+        self.assertEqual(mesh.T4Ratio, 3)
 
     def test_corner_override_reaches_tquad(self):
         from freecad.templatequad import make_mesh
@@ -633,6 +728,9 @@ class BadInputInFreeCadTest(unittest.TestCase):
         self.assertEqual(part.Shape.exportBrepToString(), shape_before, "the Part's shape")
         self.assertTrue(any(message in line for line in self.printed),
                         f"'{message}' not in the report view: {self.printed}")
+        # Once, as one line: no traceback, nothing printed twice.
+        self.assertEqual(len(self.printed), 1, self.printed)
+        self.assertEqual(self.printed[0].rstrip("\n").count("\n"), 0, self.printed[0])
 
     def test_bad_shapes_and_parameters_leave_the_document_as_it_was(self):
         box = self._part(Part.makeBox(100, 60, 10), "Box")

@@ -42,6 +42,8 @@ TEST(OptionSchema, DefaultsAreTheStructsDefaults) {
       {"min_size", python_number(d.min_size)},
       {"order", std::to_string(d.order)},
       {"sew", python_bool(d.sew)},
+      {"sizes", d.local_sizes.empty() ? "None" : "?"},
+      {"growth_rate", python_number(d.growth_rate)},
   };
   ASSERT_EQ(mesh_option_schema().size(), cpp.size()) << "a row without its struct field here, or the reverse";
   for (const MeshOptionField& field : mesh_option_schema()) {

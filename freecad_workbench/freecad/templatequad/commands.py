@@ -28,11 +28,30 @@ def _has_faces(obj) -> bool:
     return not shape.isNull() and shape.countElement("Face") > 0
 
 
+def split_selection(sub_names):
+    """(faces, others): the selected sub-elements that are faces, and the others (edges,
+    vertices), which a face mesh cannot be restricted to."""
+    faces = [name for name in sub_names if name.startswith("Face")]
+    return faces, [name for name in sub_names if not name.startswith("Face")]
+
+
+def selection_note(label, faces, others) -> str:
+    """What the report view says when the selection holds no face but other elements:
+    the whole part is meshed ("" when there is nothing to say)."""
+    if faces or not others:
+        return ""
+    return (f"{', '.join(others)} of {label} selected: not faces, so the whole of {label} is "
+            f"meshed (select faces to mesh only them)")
+
+
 def selected_source():
     """The object to mesh and the face names selected on it, or (None, [])."""
     for sel in FreeCADGui.Selection.getSelectionEx():
         if _has_faces(sel.Object):
-            faces = [name for name in sel.SubElementNames if name.startswith("Face")]
+            faces, others = split_selection(sel.SubElementNames)
+            note = selection_note(sel.Object.Label, faces, others)
+            if note:
+                FreeCAD.Console.PrintMessage(f"TemplateQuad: {note}\n")
             return sel.Object, faces
     return None, []
 

@@ -35,7 +35,7 @@ def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]]
         faces: FreeCAD face names ("Face1", ...) to mesh; None meshes all faces.
         raise_on_error: raise when the mesh fails, after removing the new object, so
             a failed call leaves the document as it was (the reason is in the report
-            view too); False keeps the object, empty and marked invalid, for the caller
+            view too); False keeps the object, empty, its reason in Quality, for the caller
             to look at ``obj.Proxy.last_error`` (the GUI command does, to open the task
             panel).
         min_size: CharacteristicLengthMin, the floor of the element size (0 = none).
@@ -91,6 +91,11 @@ def make_mesh(doc, part_obj, size: float = 0.0, corners: Optional[Iterable[str]]
     obj.T4Ratio = int(t4_ratio)
     obj.KeepGoing = bool(keep_going)
     obj.Sew = bool(sew)
+    wrong = obj.Proxy.last_error  # an input refused as it was set (said in the report view)
+    if wrong:
+        doc.removeObject(obj.Name)
+        doc.recompute()
+        raise ValueError(wrong)
     if FreeCAD.GuiUp:
         from .view_provider import ViewProviderTemplateQuadMesh
         ViewProviderTemplateQuadMesh(obj.ViewObject)

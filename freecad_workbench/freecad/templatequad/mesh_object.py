@@ -23,6 +23,8 @@ Gmsh mesh object, where they mean the same):
     BestCorners              search more corner choices per face (slower)
     Corners                  "FACE:V1,V2,..." entries overriding the automatic corners
     Sew                      join faces that touch without sharing their edge first
+    MeshRegionList           FEM mesh regions: local sizes on faces, edges, vertices
+    GrowthRate               the most neighbouring element edges differ in length
     KeepGoing                mesh the other faces when one is refused
     ElementDimension         "2D" (quads on the faces) or "3D" (hexahedra swept through
                              the solids that are extrusions or partial revolutions)
@@ -87,6 +89,12 @@ _INPUTS = (
     ("App::PropertyInteger", "Layers",
      "3D: hexahedra through each solid from its source face to its target (0 = from the "
      "element size)"),
+    ("App::PropertyLinkList", "MeshRegionList",
+     "FEM mesh regions (FEM > Mesh region): each one's CharacteristicLength on the faces, "
+     "edges and vertices of the part it references"),
+    ("App::PropertyFloat", "GrowthRate",
+     "The most one element edge may be longer than its neighbour where mesh regions make "
+     "sizes differ (over 1, at most 10)"),
 )
 #: The dimensions ElementDimension offers (FreeCAD's Gmsh object has the same names).
 ELEMENT_DIMENSIONS = ["2D", "3D"]
@@ -94,7 +102,7 @@ ELEMENT_DIMENSIONS = ["2D", "3D"]
 ELEMENT_ORDERS = ["1st", "2nd"]
 # Values of new properties, for new objects and for files saved before they existed
 # (so those files mesh as they did).
-_DEFAULTS = {"T4Ratio": 2, "Smooth": True, "BestCorners": False, "Sew": False, "Layers": 0}
+_DEFAULTS = {"T4Ratio": 2, "Smooth": True, "BestCorners": False, "Sew": False, "Layers": 0, "GrowthRate": 1.3}
 ELEMENT_QUALITY = "ElementQuality"
 _OUTPUTS = (
     ("App::PropertyString", "Quality", "Element count and quality, one line"),
@@ -119,6 +127,38 @@ _OUTPUTS = (
 )
 #: A million values are no list to show in the property editor: saved, not shown.
 _HIDDEN_OUTPUTS = (ELEMENT_QUALITY,)
+
+
+def _face_names_problem(obj):
+    """Faces: a name that is not a face, or a face the part does not have."""
+    faces = meshing.parse_faces(obj.Faces) or []
+    count = len(obj.Part.Shape.Faces) if obj.Part is not None and hasattr(obj.Part, "Shape") else None
+    for f in faces:
+        if count is not None and f >= count:
+            return f"Faces: Face{f + 1} does not exist; the part has Face1..Face{count}"
+    return None
+
+
+def _corner_problem(obj):
+    meshing.parse_corners(obj.Corners)
+    return None
+
+
+_SIZES = ("CharacteristicLengthMax", "CharacteristicLengthMin")
+
+# Inputs checked as they are set (onChanged): each gives the reason a value is wrong,
+# or None; a wrong value is put back to the one before it.
+_CHECKS = {
+    "T4Ratio": lambda obj: (None if obj.T4Ratio >= 2 else
+                            f"T4Ratio {obj.T4Ratio}: the k of the T4 template test k*C <= A and "
+                            f"k*C <= B must be at least 2"),
+    "Layers": lambda obj: None if obj.Layers >= 0 else
+    f"Layers {obj.Layers}: 0 (layers from the element size) or more",
+    "GrowthRate": lambda obj: None if 1.0 < obj.GrowthRate <= 10.0 else
+    f"GrowthRate {obj.GrowthRate:g}: over 1 and at most 10",
+    "Faces": _face_names_problem,
+    "Corners": _corner_problem,
+}
 
 
 def _migrate_size(obj) -> None:
@@ -170,6 +210,8 @@ OPTION_PROPERTIES = {
     "best_corners": ("BestCorners", bool),
     "order": ("ElementOrder", _order_number),
     "sew": ("Sew", bool),
+    "sizes": ("MeshRegionList", meshing.region_sizes),
+    "growth_rate": ("GrowthRate", float),
 }
 
 #: Input properties of the object that are not options of tquad.mesh_shape, and why.
@@ -245,6 +287,37 @@ class TemplateQuadMesh(StatelessProxy):
         self.meshed_inputs = None  # the inputs the current mesh was made with
         self.mesh_requested = False  # set by request_mesh for the recompute it starts
 
+    def onBeforeChange(self, obj, prop):
+        if prop in _CHECKS:
+            self._value_before = (prop, getattr(obj, prop, None))
+
+    def onChanged(self, obj, prop):
+        """A wrong input is said when it is set, in one line, and put back; the sizes'
+        order (minimum over maximum) is only warned about, since a script may set the
+        other next."""
+        if getattr(obj.Document, "Restoring", False) or prop not in _CHECKS and prop not in _SIZES:
+            return
+        if prop in _SIZES:
+            high, low = obj.CharacteristicLengthMax.Value, obj.CharacteristicLengthMin.Value
+            if high > 0 and low > high:
+                FreeCAD.Console.PrintWarning(
+                    f"TemplateQuad: {obj.Label}: the minimum element size ({low:g} mm) is larger than "
+                    f"the element size ({high:g} mm): meshing will refuse it\n")
+            return
+        try:
+            reason = _CHECKS[prop](obj)
+        except ValueError as error:
+            reason = str(error)
+        if reason is None:
+            return
+        self.last_error = reason
+        before = getattr(self, "_value_before", None)
+        self._value_before = None
+        if before is not None and before[0] == prop and before[1] is not None:
+            setattr(obj, prop, before[1])
+            reason += f"; kept {before[1]!r}"
+        FreeCAD.Console.PrintError(f"TemplateQuad: {obj.Label}: {reason}\n")
+
     def request_mesh(self, obj):
         """Mesh obj now (a recompute of its document); the outcome is in the object
         (its mesh and outputs) and in ``last_error`` and ``cancelled``."""
@@ -260,10 +333,14 @@ class TemplateQuadMesh(StatelessProxy):
 
         Meshing: obj.Part's shape -> tquad -> obj.FemMesh, outputs, report view.
 
-        On failure the mesh is emptied (a stale mesh must not reach a solver), the
-        reason is printed and kept in ``last_error``, and the exception propagates so
-        FreeCAD marks the object invalid. Cancelled by the user (GUI), everything is
-        left as it was and ``cancelled`` is set; the caller restores the inputs.
+        On a user's error (a refused part, a bad setting, tquad missing) the mesh is
+        emptied (a stale mesh must not reach a solver), the reason is printed once, as
+        one line naming FreeCAD's objects, and kept in ``last_error`` and the Quality
+        property; nothing is raised, since FreeCAD prints a raised error's whole Python
+        traceback (``make_mesh`` and the GUI commands read ``last_error``). Anything
+        else is a fault of the add-on and propagates with its traceback. Cancelled by
+        the user (GUI), everything is left as it was and ``cancelled`` is set; the
+        caller restores the inputs.
         """
         if not getattr(self, "mesh_requested", False):
             self._mark_out_of_date(obj)
@@ -283,17 +360,11 @@ class TemplateQuadMesh(StatelessProxy):
             if mesh.refused_faces and not obj.KeepGoing:
                 raise ValueError(meshing.refusal_error(mesh))
         except meshing.TquadMissing as error:
-            self.last_error = str(error).strip()
-            self._clear(obj)
-            self.meshed_inputs = None
-            FreeCAD.Console.PrintError(self.last_error + "\n")
-            raise
+            self._fail(obj, str(error).strip())
+            return
         except ValueError as error:
-            self.last_error = meshing.explain_tquad_error(str(error).strip())
-            self._clear(obj)
-            self.meshed_inputs = None
-            FreeCAD.Console.PrintError(f"TemplateQuad: {obj.Label}: {self.last_error}\n")
-            raise
+            self._fail(obj, meshing.explain_tquad_error(str(error).strip()))
+            return
 
         obj.FemMesh = meshing.to_femmesh(mesh)
         obj.TemplateTrees = meshing.template_tree_lines(mesh)
@@ -315,6 +386,9 @@ class TemplateQuadMesh(StatelessProxy):
         unsewn = meshing.unsewn_warning(obj.UnsewnEdges, obj.Sew)
         if unsewn:
             FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {unsewn}\n")
+        oversized = meshing.size_warning(mesh)
+        if oversized:
+            FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {oversized}\n")
         turned, disagreeing = meshing.orientation_messages(mesh)
         if turned:
             FreeCAD.Console.PrintMessage(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {turned}\n")
@@ -339,12 +413,12 @@ class TemplateQuadMesh(StatelessProxy):
                 raise ValueError("%d solid(s) not swept: %s. Turn on 'Mesh the other faces' (KeepGoing) "
                                  "to sweep the rest." % (len(swept.refused_solids),
                                                          "; ".join(meshing.refused_solid_lines(swept))))
-        except (meshing.TquadMissing, ValueError) as error:
-            self.last_error = meshing.explain_tquad_error(str(error).strip())
-            self._clear(obj)
-            self.meshed_inputs = None
-            FreeCAD.Console.PrintError(f"TemplateQuad: {obj.Label}: {self.last_error}\n")
-            raise
+        except meshing.TquadMissing as error:
+            self._fail(obj, str(error).strip())
+            return
+        except ValueError as error:
+            self._fail(obj, meshing.explain_tquad_error(str(error).strip()))
+            return
         obj.FemMesh = meshing.to_femmesh_volumes(swept)
         obj.TemplateTrees = [meshing.swept_solid_line(s) for s in swept.solids]
         for face in getattr(swept, "unshared_faces", []):
@@ -368,6 +442,15 @@ class TemplateQuadMesh(StatelessProxy):
         self._remember_meshed_inputs(obj)
         for line in obj.RefusedFaces:
             FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {obj.Part.Label} {line} (not swept)\n")
+
+    def _fail(self, obj, reason):
+        """A user's error: the mesh emptied, the reason kept (``last_error``, Quality)
+        and printed once as one line."""
+        self.last_error = reason
+        self._clear(obj)
+        self.meshed_inputs = None
+        obj.Quality = f"not meshed: {reason}"
+        FreeCAD.Console.PrintError(f"TemplateQuad: {obj.Label}: {reason}\n")
 
     def _mark_out_of_date(self, obj):
         """A recompute nobody asked to mesh: the part or a setting changed. The mesh

@@ -112,7 +112,8 @@ def parse_faces(names: Iterable[str]) -> Optional[List[int]]:
 def mesh_shape(shape, size: float = 0.0, faces: Optional[Sequence[int]] = None,
                corners: Optional[Dict[int, List[int]]] = None, t4_ratio: int = 2,
                keep_going: bool = False, smooth: bool = True, best_corners: bool = False,
-               min_size: float = 0.0, order: int = 1, sew: bool = False, progress=None):
+               min_size: float = 0.0, order: int = 1, sew: bool = False, progress=None,
+               sizes: Optional[Dict[str, float]] = None, growth_rate: float = 1.3):
     """mesh_shape(): mesh a Part.Shape with tquad; returns the tquad.Mesh.
 
     The shape goes over as BREP text (``exportBrepToString``), which keeps its
@@ -128,7 +129,8 @@ def mesh_shape(shape, size: float = 0.0, faces: Optional[Sequence[int]] = None,
                             corners=corners or None, keep_going=bool(keep_going),
                             t4_ratio=int(t4_ratio), smooth=bool(smooth),
                             best_corners=bool(best_corners), min_size=float(min_size),
-                            order=int(order), sew=bool(sew), progress=progress)
+                            order=int(order), sew=bool(sew), progress=progress,
+                            sizes=sizes, growth_rate=float(growth_rate))
 
 
 def run_plain(work, title: str = ""):
@@ -321,6 +323,45 @@ def unsewn_warning(pairs: int, sew: bool) -> str:
     advice = "" if sew else "; turn on Sew to join them"
     return (f"{pairs} pair(s) of edges lie on each other without being shared (the faces "
             f"are not sewn there): the mesh is not connected along them{advice}")
+
+
+_REGION_ELEMENT = re.compile(r"^(Face|Edge|Vertex)(\d+)$")
+
+
+def region_sizes(regions):
+    """region_sizes(): tquad's ``sizes`` from FEM mesh regions (``Fem::MeshRegion``
+    objects, ObjectsFem.makeMeshRegion): each one's CharacteristicLength on the faces,
+    edges and vertices its References name, as "face2" and so on (0-based; the least
+    size where regions overlap). The References are taken to name the meshed part's
+    elements, as FreeCAD's own mesh regions do. None when no region sets a size.
+
+    Raises:
+        ValueError: a region of length 0 or less, or a reference to a solid or a shell.
+    """
+    sizes = {}
+    for region in regions or []:
+        length = float(getattr(region.CharacteristicLength, "Value", region.CharacteristicLength))
+        if not length > 0:
+            raise ValueError(f"{region.Label}: its CharacteristicLength must be over 0")
+        for _, names in region.References:
+            for name in names:
+                match = _REGION_ELEMENT.match(name)
+                if not match:
+                    raise ValueError(f"{region.Label}: {name} is not a face, edge or vertex; a mesh "
+                                     "region of TemplateQuad sizes faces, edges and vertices")
+                key = f"{match.group(1).lower()}{int(match.group(2)) - 1}"
+                sizes[key] = min(sizes.get(key, length), length)
+    return sizes or None
+
+
+def size_warning(mesh) -> str:
+    """size_warning(): "" unless the element size exceeds the part, which then gets the
+    fewest elements its edges' curvature and faces allow (the size has no say)."""
+    diagonal, size = getattr(mesh, "shape_diagonal", None), getattr(mesh, "edge_size", None)
+    if not diagonal or not size or size <= diagonal:
+        return ""
+    return (f"the element size {size:g} mm is larger than the part ({diagonal:.4g} mm across): each "
+            f"edge gets the fewest elements its curvature and faces allow")
 
 
 def orientation_messages(mesh):

@@ -73,7 +73,6 @@ class TemplateQuadTaskPanel:
     def __init__(self, obj):
         self.obj = obj
         self.original = self._inputs()
-        self.applied_values = self.original
         self.applied = False
         self.form = self._build_form()
         self._load(self.original)
@@ -107,7 +106,7 @@ class TemplateQuadTaskPanel:
         Nothing is re-meshed when the values are those already meshed and the mesh
         is not out of date ("Mesh" then OK meshes once). A mesh cancelled by the user restores the values it replaced.
         """
-        values = self._values()
+        values = self._edited()
         error = getattr(self.obj.Proxy, "last_error", "")
         stale = "Touched" in self.obj.State or getattr(self.obj, "OutOfDate", False)
         if values == self._inputs() and not error and not stale:
@@ -115,7 +114,14 @@ class TemplateQuadTaskPanel:
         doc = self.obj.Document
         before = self._inputs()
         doc.openTransaction("Edit template quad mesh")
+        self.obj.Proxy.last_error = ""
         self._store(values)
+        refused = self.obj.Proxy.last_error  # a value the object refused as it was set
+        if refused:
+            doc.abortTransaction()
+            self.obj.Proxy.last_error = ""  # the mesh kept is that of the values kept
+            self.summary.setText(f"<span style='color:#b00'>Not meshed.</span> {refused}")
+            return False
         self.obj.Proxy.request_mesh(self.obj)
         if getattr(self.obj.Proxy, "cancelled", False):
             doc.abortTransaction()
@@ -126,6 +132,7 @@ class TemplateQuadTaskPanel:
             return False
         doc.commitTransaction()
         self.applied = True
+        self._load(self._inputs())
         self._show_results()
         return not self.obj.Proxy.last_error
 
@@ -178,6 +185,13 @@ class TemplateQuadTaskPanel:
                 self.keep_going.isChecked(), self.accept_incomplete.isChecked(),
                 self.t4_ratio.value(), self.dimension.currentText(), self.layers.value())
 
+    def _edited(self):
+        """The values to mesh with: the panel's where the user changed a field since it
+        was loaded, the object's own elsewhere, so that a value changed in the property
+        editor while the panel is open is kept, not put back by OK."""
+        return tuple(panel if panel != loaded else current
+                     for panel, loaded, current in zip(self._values(), self.loaded, self._inputs()))
+
     def _store(self, values):
         """Set the properties whose values differ (an unchanged one stays untouched)."""
         for name, value, current in zip(_INPUT_NAMES, values, self._inputs()):
@@ -199,6 +213,7 @@ class TemplateQuadTaskPanel:
         self.t4_ratio.setValue(t4_ratio)
         self.dimension.setCurrentIndex(max(0, self.dimension.findText(dimension)))
         self.layers.setValue(layers)
+        self.loaded = self._values()  # as the fields show them (rounded as they round)
 
     def _show_results(self):
         o = self.obj

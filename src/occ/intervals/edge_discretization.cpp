@@ -222,6 +222,21 @@ EdgeSpacing arc_length_spacing(const TopoDS_Edge& edge, int e, int n, const Cusp
   return out;
 }
 
+// Edge e's nodes at n > 0 segments where its size field puts them (local_sizes.h).
+EdgeSpacing graded_spacing(const TopoDS_Edge& edge, int e, int n, const EdgeSizing& sizing) {
+  double u0 = 0, u1 = 0;
+  BRep_Tool::Range(edge, u0, u1);
+  const BRepAdaptor_Curve curve(edge);
+  const double length = GCPnts_AbscissaPoint::Length(curve);
+  EdgeSpacing out;
+  out.segments = n;
+  out.params.push_back(u0);
+  for (double s : graded_positions(sizing, length, n)) out.params.push_back(parameter_at(curve, s, e));
+  out.params.push_back(u1);
+  for (int i = 1; i < n; ++i) out.inner_points.push_back(to_vec3(curve.Value(out.params[i])));
+  return out;
+}
+
 }  // namespace
 
 std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vector<int>& segments,
@@ -250,8 +265,12 @@ std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vect
     EdgeSpacing own;  // without `kept`: computed for this call alone
     EdgeSpacing& spacing = kept ? kept->last[e] : own;
     if (spacing.segments != n) {
-      const CuspEnds& cusp = kept && !kept->cusp_ends.empty() ? kept->cusp_ends[e] : even;
-      spacing = arc_length_spacing(edge, e, n, cusp);
+      if (kept && !kept->grading.empty() && kept->grading[e].graded()) {
+        spacing = graded_spacing(edge, e, n, kept->grading[e]);
+      } else {
+        const CuspEnds& cusp = kept && !kept->cusp_ends.empty() ? kept->cusp_ends[e] : even;
+        spacing = arc_length_spacing(edge, e, n, cusp);
+      }
     }
     out.params = spacing.params;
     if (index.merged_into(e).edge >= 0) continue;  // its nodes are another edge's, below

@@ -10,6 +10,7 @@
 #include "core/geometry/box3.h"
 #include "core/mesh/quad_mesh.h"
 #include "occ/face/cusp_ends.h"
+#include "occ/intervals/local_sizes.h"
 #include "occ/model/shape_index.h"
 
 namespace tquad {
@@ -70,13 +71,16 @@ struct EdgeSpacing {
 struct EdgeSpacings {
   // Per edge, its cusp ends' segment lengths (cusp_ends.h), or empty: all even.
   std::vector<CuspEnds> cusp_ends;
+  // Per edge, its graded sizes (local_sizes.h), or empty: the uniform size. A graded
+  // edge's nodes follow its size field, and its cusp ends are not lengthened.
+  std::vector<EdgeSizing> grading;
   std::vector<EdgeSpacing> last;
 };
 
 // Places the nodes: vertices (nodes 0 .. vertex_count-1), then the inner nodes of each
 // edge with segments[e] > 0 (edges of unmeshed faces can be given 0 and are skipped).
 // Segments are even by arc length, but for a cusp end's segment (kept->cusp_ends) where
-// it is longer than the even ones. With `kept`, an edge whose count is the one kept
+// it is longer than the even ones, and but for a graded edge's (kept->grading). With `kept`, an edge whose count is the one kept
 // takes its spacing from there (the same numbers), and the others' are kept for next
 // time.
 std::vector<EdgeNodes> discretize_edges(const ShapeIndex& index, const std::vector<int>& segments,

@@ -87,6 +87,8 @@ class Mesh:
             ``quads`` then ``mid_nodes`` side by side are the 8-node quads in the
             order of VTK's quadratic quad and CalculiX's S8.
         edge_size: for a shape, the target edge length used.
+        shape_diagonal: for a shape, its bounding-box diagonal (the automatic size
+            is a 25th of it; a size above it gives each edge its fewest segments).
         changed_edges: for a shape, the edges whose counts changed by one so that
             every face's total is even: dicts ``edge``, ``from``, ``to``.
         unsewn_edge_pairs: for a shape, pairs of edges that lie on each other
@@ -127,6 +129,7 @@ class Mesh:
         self.refused_faces: List[dict] = data["refused_faces"]
         self.quality: dict = data["quality"]
         self.edge_size: Optional[float] = data.get("edge_size")
+        self.shape_diagonal: Optional[float] = data.get("shape_diagonal")
         self.changed_edges: List[dict] = data.get("changed_edges", [])
         self.unsewn_edge_pairs: List[Tuple[int, int]] = data.get("unsewn_edge_pairs", [])
         self.sewn_edges: int = data.get("sewn_edges", 0)
@@ -207,7 +210,8 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
                max_quads: int = _MAX_QUADS, smooth: bool = True,
                progress: Optional[Callable[[str, int, int], Optional[bool]]] = None,
                read_timeout: Optional[float] = None, best_corners: bool = False,
-               min_size: float = 0.0, order: int = 1, sew: bool = False) -> Mesh:
+               min_size: float = 0.0, order: int = 1, sew: bool = False,
+               sizes: Optional[Dict[str, float]] = None, growth_rate: float = 1.3) -> Mesh:
     """Mesh the faces of a CAD shape, conforming across shared edges.
 
     Args:
@@ -222,7 +226,8 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
     "discretize edges", "mesh faces", "assemble") and after each face, and
     returning True (or raising) cancels; ``read_timeout`` None takes the default;
     with ``order`` 2 the middle nodes are in ``mid_nodes``; with ``sew`` the
-    edges merged are counted in ``sewn_edges``.
+    edges merged are counted in ``sewn_edges``; ``sizes`` maps "face3", "edge7" or
+    "vertex1" (0-based) to a local size, e.g. ``sizes={"face3": 0.5}``.
 
     Raises:
         Cancelled: the progress callback asked to stop (nothing is returned).
@@ -234,11 +239,20 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
     corner_map: Dict[int, List[int]] = {
         _integer(k, "corners' face"): [_integer(v, "corner of face %s" % k) for v in vs]
         for k, vs in (corners or {}).items()}
+    if sizes is not None and not isinstance(sizes, Mapping):
+        raise ValueError("sizes must map 'face3', 'edge7' or 'vertex1' to a size, not %r" % (sizes,))
+    size_entries = []
+    for entity, value in (sizes or {}).items():
+        if not isinstance(entity, str) or isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise ValueError("sizes entry %r: %r: expected 'face3', 'edge7' or 'vertex1' and a number"
+                             % (entity, value))
+        size_entries.append("%s:%r" % (entity, float(value)))
     return Mesh(_core.mesh_shape(str(brep_text_or_path), float(size), face_list, corner_map,
                                  bool(keep_going), bool(allow_inverted), _integer(threads, "threads", 0, 1024),
                                  *_template_integers(t4_ratio, t5_cut_edges, max_quads), bool(smooth),
                                  progress, 0.0 if read_timeout is None else float(read_timeout),
-                                 bool(best_corners), float(min_size), _integer(order, "order", 1, 2), bool(sew)))
+                                 bool(best_corners), float(min_size), _integer(order, "order", 1, 2), bool(sew),
+                                 size_entries, float(growth_rate)))
 
 
 def mesh_option_schema() -> List[dict]:

@@ -18,6 +18,7 @@ class Mesh:
     refused_faces: List[dict]
     quality: dict
     edge_size: Optional[float]
+    shape_diagonal: Optional[float]
     changed_edges: List[dict]
     unsewn_edge_pairs: List[Tuple[int, int]]
     sewn_edges: int
@@ -51,7 +52,8 @@ def mesh_shape(brep_text_or_path: str, *, size: float = ..., faces: Optional[Ite
                t5_cut_edges: int = ..., max_quads: int = ..., smooth: bool = ...,
                progress: Optional[Callable[[str, int, int], Optional[bool]]] = ...,
                read_timeout: Optional[float] = ..., best_corners: bool = ..., min_size: float = ...,
-               order: int = ..., sew: bool = ...) -> Mesh: ...
+               order: int = ..., sew: bool = ..., sizes: Optional[Dict[str, float]] = ...,
+               growth_rate: float = ...) -> Mesh: ...
 
 class SweptMesh:
     nodes: np.ndarray
