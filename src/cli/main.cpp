@@ -115,6 +115,10 @@ int run_cli(int argc, char** argv) {
   mesh->add_option("--size-at", command.sizes_at,
                    option_help("sizes", true, "For example --size-at face3:0.5 (repeat for more)."))
       ->type_name("ENTITY:H");
+  mesh->add_option("--curvature-segments", command.shape.curvature_segments, option_help("curvature_segments", true))
+      ->type_name("N")
+      ->check(CLI::Range(8, 1000).description(""))
+      ->capture_default_str();
   mesh->add_option("--growth-rate", command.shape.growth_rate, option_help("growth_rate", true))
       ->type_name("G")
       ->capture_default_str();

@@ -60,6 +60,9 @@ const std::vector<MeshOptionField>& mesh_option_schema() {
        "Local target edge lengths under the size, per face, edge or vertex (0-based), as "
        "face3, edge7 or vertex1 with its length: the edges of a face take its size, and the "
        "sizes around grow from there by at most the growth rate per segment."},
+      {"curvature_segments", "--curvature-segments", "MeshSizeFromCurvature", "int", "8",
+       "The fewest segments a curved edge gets per full turn of its curve (8 to 1000; 8 is one "
+       "per 45 degrees)."},
       {"growth_rate", "--growth-rate", "GrowthRate", "float", "1.3",
        "The most one segment may be longer than its neighbour where local sizes make them "
        "differ (over 1, at most 10)."},

@@ -276,11 +276,15 @@ class ShapeMeshContext {
     }
     to_mesh_ = meshed_;
     for (const auto& [f, why] : damaged_) if (f >= 0 && f < index_.face_count()) to_mesh_[f] = 0;
-    edge_floor_ = edge_turn_minimums(index_, usable);
+    edge_floor_ = edge_turn_minimums(index_, usable, options_.curvature_segments);
     sized_ = edge_segment_counts(index_, result_.size, edge_floor_, lengths_, usable);
     // Local sizes only refine: each edge's count from its graded field, at least its
     // turning minimum; strips and short edges are then judged by the smallest size.
     check_growth_rate(options_.growth_rate);
+    if (options_.curvature_segments < 8 || options_.curvature_segments > 1000) {
+      throw InputError("the segments per full turn of a curve must be 8 (one per 45 degrees) to 1000, not " +
+                       std::to_string(options_.curvature_segments));
+    }
     double judged_size = result_.size;
     goal_lengths_ = lengths_;
     if (!options_.local_sizes.empty()) {

@@ -70,6 +70,9 @@ struct ShapeMeshOptions {
   // one; neighbouring segments then differ by at most growth_rate.
   std::vector<LocalSize> local_sizes;
   double growth_rate = kDefaultGrowthRate;
+  // Curved edges get at least this many segments per full turn (edge_discretization.h;
+  // at least 8, one per 45 degrees).
+  int curvature_segments = 8;
   // Faces to mesh (0-based); empty: all.
   std::vector<int> faces;
   // Per face, the shape vertices to use as corners (2 to 4).

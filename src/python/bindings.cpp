@@ -197,12 +197,13 @@ py::dict mesh_shape_binding(const std::string& brep_text_or_path, double size, c
                             bool allow_inverted, int threads, int t4_ratio, int t5_cut_edges,
                             long long max_quads, bool smooth, const py::object& progress,
                             double read_timeout, bool best_corners, double min_size, int order, bool sew,
-                            const std::vector<std::string>& sizes, double growth_rate) {
+                            const std::vector<std::string>& sizes, int curvature_segments, double growth_rate) {
   ShapeMeshOptions options;
   options.sew = sew;
   for (const std::string& entry : sizes) options.local_sizes.push_back(parse_local_size(entry));
   check_growth_rate(growth_rate);
   options.growth_rate = growth_rate;
+  options.curvature_segments = curvature_segments;
   options.order = order;  // checked by mesh_shape (1 or 2)
   options.smooth = smooth;
   options.best_corners = best_corners;
@@ -461,5 +462,5 @@ PYBIND11_MODULE(_core, m) {
         py::arg("faces"), py::arg("corners"), py::arg("keep_going"), py::arg("allow_inverted"),
         py::arg("threads"), py::arg("t4_ratio"), py::arg("t5_cut_edges"), py::arg("max_quads"), py::arg("smooth"),
         py::arg("progress"), py::arg("read_timeout"), py::arg("best_corners"), py::arg("min_size"), py::arg("order"),
-        py::arg("sew"), py::arg("sizes"), py::arg("growth_rate"));
+        py::arg("sew"), py::arg("sizes"), py::arg("curvature_segments"), py::arg("growth_rate"));
 }

@@ -620,6 +620,8 @@ class MeshObjectTest(unittest.TestCase):
         mesh = make_mesh(self.doc, part, size=5.0)
         cases = [("T4Ratio", 0, 2, "must be at least 2"),
                  ("Layers", -3, 0, "0 (layers from the element size) or more"),
+                 ("MeshSizeFromCurvature", 4, 8, "8 (one element edge per 45 degrees) to 1000"),
+                 ("GrowthRate", 0.5, 1.3, "over 1 and at most 10"),
                  ("Faces", ["Face99"], [], "Face99 does not exist; the part has Face1..Face6"),
                  ("Corners", ["Face1:Vertex1"], [], "2, 3 or 4 corners")]
         for prop, wrong, kept, reason in cases:

@@ -108,7 +108,13 @@ std::vector<std::vector<double>> segments_along_edges(const TopoDS_Shape& shape,
         params.push_back(projection.LowerDistanceParameter());
       }
     }
+    // Both ends (a closed edge's one vertex projects to one of them only), each once.
+    params.push_back(u0);
+    params.push_back(u1);
     std::sort(params.begin(), params.end());
+    params.erase(std::unique(params.begin(), params.end(),
+                             [&](double a, double b) { return std::abs(a - b) <= 1e-9 * (1 + std::abs(u1 - u0)); }),
+                 params.end());
     const BRepAdaptor_Curve adaptor(edge);
     std::vector<double> gaps;
     for (std::size_t k = 1; k < params.size(); ++k) {
@@ -158,6 +164,32 @@ TEST(LocalSizes, AHoleGivenATenthOfTheSizeIsFineAndGradedOut) {
   ShapeMeshOptions empty = plain;
   empty.growth_rate = 2.0;  // without local sizes the rate changes nothing
   EXPECT_EQ(mesh_shape(plate, plain).mesh.nodes.size(), mesh_shape(plate, empty).mesh.nodes.size());
+}
+
+TEST(LocalSizes, CurvedEdgesGetTheSegmentsPerTurnAsked) {
+  const TopoDS_Shape plate = holed_plate();
+  for (int per_turn : {8, 24, 64}) {
+    SCOPED_TRACE(per_turn);
+    ShapeMeshOptions options;
+    options.size = 5.0;
+    options.curvature_segments = per_turn;
+    const ShapeMeshResult result = mesh_shape(plate, options);
+    int rims = 0;
+    for (const std::vector<double>& gaps : segments_along_edges(plate, result.mesh)) {
+      double length = 0;
+      for (double g : gaps) length += g;
+      if (std::abs(length - 2 * M_PI * 8) > 0.5) continue;
+      ++rims;
+      // 2 pi 8 / 5 = 10 segments from the size; at least per_turn from the curve (a
+      // face's total made even may add one).
+      EXPECT_GE(static_cast<int>(gaps.size()), std::max(per_turn, 10));
+      EXPECT_LE(static_cast<int>(gaps.size()), std::max(per_turn, 10) + 2);
+    }
+    EXPECT_EQ(rims, 2);
+  }
+  ShapeMeshOptions too_few;
+  too_few.curvature_segments = 7;
+  EXPECT_THROW(mesh_shape(plate, too_few), InputError);
 }
 
 TEST(LocalSizes, EntriesOutsideTheShapeAreRefusedByName) {

@@ -43,6 +43,7 @@ TEST(OptionSchema, DefaultsAreTheStructsDefaults) {
       {"order", std::to_string(d.order)},
       {"sew", python_bool(d.sew)},
       {"sizes", d.local_sizes.empty() ? "None" : "?"},
+      {"curvature_segments", std::to_string(d.curvature_segments)},
       {"growth_rate", python_number(d.growth_rate)},
   };
   ASSERT_EQ(mesh_option_schema().size(), cpp.size()) << "a row without its struct field here, or the reverse";

@@ -79,6 +79,26 @@ class MeshShapeTest(unittest.TestCase):
         self.assertEqual({f["route"] for f in m.faces}, {"templates on corners"}, "each face names its route")
         self.assertGreater(m.edge_size, 0, "default size reported")
 
+    def test_local_sizes_refine_and_bad_entries_are_value_errors(self):
+        path = os.path.join(SHAPES, "cylinder.brep")
+        plain = tquad.mesh_shape(path, size=2.0)
+        local = tquad.mesh_shape(path, size=2.0, sizes={"face0": 0.5})
+        self.assertGreater(len(local.quads), len(plain.quads), "a finer face")
+        curved = tquad.mesh_shape(path, size=2.0, curvature_segments=64)
+        self.assertGreaterEqual(len(curved.quads), len(plain.quads))
+        for bad, words in [({"sizes": {"face999": 0.5}}, "face999"),
+                           ({"sizes": {"Face1": 0.5}}, "Face1"),
+                           ({"sizes": {"face0": -1.0}}, "over 0"),
+                           ({"sizes": {"face0": "1"}}, "a number"),
+                           ({"sizes": ["face0"]}, "sizes must map"),
+                           ({"growth_rate": 1.0}, "growth rate"),
+                           ({"curvature_segments": 7}, "curvature_segments"),
+                           ({"curvature_segments": 8.5}, "curvature_segments")]:
+            with self.subTest(bad=bad):
+                with self.assertRaises(ValueError) as caught:
+                    tquad.mesh_shape(path, size=2.0, **bad)
+                self.assertIn(words, str(caught.exception))
+
     def test_sewing_a_shape_without_free_edges_changes_nothing(self):
         # tests/occ/test_shape_meshing.cpp sews the bracket written as IGES trimmed
         # surfaces (21 edges merged); here the option's way through the module.

@@ -24,6 +24,7 @@ Gmsh mesh object, where they mean the same):
     Corners                  "FACE:V1,V2,..." entries overriding the automatic corners
     Sew                      join faces that touch without sharing their edge first
     MeshRegionList           FEM mesh regions: local sizes on faces, edges, vertices
+    MeshSizeFromCurvature    the fewest element edges per full turn of a curved edge
     GrowthRate               the most neighbouring element edges differ in length
     KeepGoing                mesh the other faces when one is refused
     ElementDimension         "2D" (quads on the faces) or "3D" (hexahedra swept through
@@ -92,6 +93,9 @@ _INPUTS = (
     ("App::PropertyLinkList", "MeshRegionList",
      "FEM mesh regions (FEM > Mesh region): each one's CharacteristicLength on the faces, "
      "edges and vertices of the part it references"),
+    ("App::PropertyInteger", "MeshSizeFromCurvature",
+     "The fewest element edges a curved edge gets per full turn of its curve (8 to 1000; "
+     "8 is one per 45 degrees)"),
     ("App::PropertyFloat", "GrowthRate",
      "The most one element edge may be longer than its neighbour where mesh regions make "
      "sizes differ (over 1, at most 10)"),
@@ -102,7 +106,8 @@ ELEMENT_DIMENSIONS = ["2D", "3D"]
 ELEMENT_ORDERS = ["1st", "2nd"]
 # Values of new properties, for new objects and for files saved before they existed
 # (so those files mesh as they did).
-_DEFAULTS = {"T4Ratio": 2, "Smooth": True, "BestCorners": False, "Sew": False, "Layers": 0, "GrowthRate": 1.3}
+_DEFAULTS = {"T4Ratio": 2, "Smooth": True, "BestCorners": False, "Sew": False, "Layers": 0, "GrowthRate": 1.3,
+             "MeshSizeFromCurvature": 8}
 ELEMENT_QUALITY = "ElementQuality"
 _OUTPUTS = (
     ("App::PropertyString", "Quality", "Element count and quality, one line"),
@@ -154,6 +159,8 @@ _CHECKS = {
                             f"k*C <= B must be at least 2"),
     "Layers": lambda obj: None if obj.Layers >= 0 else
     f"Layers {obj.Layers}: 0 (layers from the element size) or more",
+    "MeshSizeFromCurvature": lambda obj: None if 8 <= obj.MeshSizeFromCurvature <= 1000 else
+    f"MeshSizeFromCurvature {obj.MeshSizeFromCurvature}: 8 (one element edge per 45 degrees) to 1000",
     "GrowthRate": lambda obj: None if 1.0 < obj.GrowthRate <= 10.0 else
     f"GrowthRate {obj.GrowthRate:g}: over 1 and at most 10",
     "Faces": _face_names_problem,
@@ -211,6 +218,7 @@ OPTION_PROPERTIES = {
     "order": ("ElementOrder", _order_number),
     "sew": ("Sew", bool),
     "sizes": ("MeshRegionList", meshing.region_sizes),
+    "curvature_segments": ("MeshSizeFromCurvature", int),
     "growth_rate": ("GrowthRate", float),
 }
 

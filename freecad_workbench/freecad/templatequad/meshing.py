@@ -113,7 +113,8 @@ def mesh_shape(shape, size: float = 0.0, faces: Optional[Sequence[int]] = None,
                corners: Optional[Dict[int, List[int]]] = None, t4_ratio: int = 2,
                keep_going: bool = False, smooth: bool = True, best_corners: bool = False,
                min_size: float = 0.0, order: int = 1, sew: bool = False, progress=None,
-               sizes: Optional[Dict[str, float]] = None, growth_rate: float = 1.3):
+               sizes: Optional[Dict[str, float]] = None, curvature_segments: int = 8,
+               growth_rate: float = 1.3):
     """mesh_shape(): mesh a Part.Shape with tquad; returns the tquad.Mesh.
 
     The shape goes over as BREP text (``exportBrepToString``), which keeps its
@@ -130,7 +131,8 @@ def mesh_shape(shape, size: float = 0.0, faces: Optional[Sequence[int]] = None,
                             t4_ratio=int(t4_ratio), smooth=bool(smooth),
                             best_corners=bool(best_corners), min_size=float(min_size),
                             order=int(order), sew=bool(sew), progress=progress,
-                            sizes=sizes, growth_rate=float(growth_rate))
+                            sizes=sizes, curvature_segments=int(curvature_segments),
+                            growth_rate=float(growth_rate))
 
 
 def run_plain(work, title: str = ""):

@@ -144,19 +144,19 @@ std::map<int, std::string> unusable_edges(const ShapeIndex& index, const Box3& b
   return bad;
 }
 
-int segments_for_turn(double turn) {
-  constexpr double kMaxSegmentTurn = M_PI / 4;  // edge_discretization.h
+int segments_for_turn(double turn, int per_turn) {
+  const double max_segment_turn = 2 * M_PI / std::max(per_turn, kDefaultSegmentsPerTurn);
   if (!(turn > 0)) return 1;  // NaN too
-  return std::max(1, static_cast<int>(std::ceil(std::min(turn, 1e3) / kMaxSegmentTurn - 1e-9)));
+  return std::max(1, static_cast<int>(std::ceil(std::min(turn, 1e3) / max_segment_turn - 1e-9)));
 }
 
-std::vector<int> edge_turn_minimums(const ShapeIndex& index, const std::vector<char>& usable) {
+std::vector<int> edge_turn_minimums(const ShapeIndex& index, const std::vector<char>& usable, int per_turn) {
   std::vector<int> minimum(index.edge_count(), 0);
   for (int e = 0; e < index.edge_count(); ++e) {
     if (!usable.empty() && !usable[e]) continue;
     const TopoDS_Edge edge = forward(index.edge(e));
     if (BRep_Tool::Degenerated(edge)) continue;
-    minimum[e] = segments_for_turn(tangent_turn(BRepAdaptor_Curve(edge)));
+    minimum[e] = segments_for_turn(tangent_turn(BRepAdaptor_Curve(edge)), per_turn);
   }
   return minimum;
 }

@@ -33,17 +33,21 @@ struct EdgeNodes {
 // each with the reason; a damaged file's edges. Degenerate edges are not listed.
 std::map<int, std::string> unusable_edges(const ShapeIndex& index, const Box3& box);
 
-// The fewest segments that stand for a curve turning by `turn` radians: one per 45
-// degrees (so that no quad cuts across the surface it stands for: a full circle gets
-// at least 8 segments, a semicircle 4; Gmsh's default is at least 7 points per
-// circle), at least 1. Edges and the cuts of a decomposed face (face_decomposed.h)
-// both take it.
-int segments_for_turn(double turn);
+// The fewest segments per full turn of a curve: one per 45 degrees, so that no quad
+// cuts across the surface it stands for (a full circle gets at least 8 segments, a
+// semicircle 4; Gmsh's default is at least 7 points per circle).
+constexpr int kDefaultSegmentsPerTurn = 8;
 
-// Per edge, one segment per 45 degrees of its curve's turning, at least 1 (0 for a
-// degenerate edge): the fewest segments that stand for its shape.
+// The fewest segments that stand for a curve turning by `turn` radians: `per_turn`
+// per full turn (never under kDefaultSegmentsPerTurn), at least 1. Edges and the cuts
+// of a decomposed face (face_decomposed.h) both take it.
+int segments_for_turn(double turn, int per_turn = kDefaultSegmentsPerTurn);
+
+// Per edge, `per_turn` segments per full turn of its curve's turning, at least 1 (0
+// for a degenerate edge): the fewest segments that stand for its shape.
 // `usable`: per edge, or empty for all; the others get 0.
-std::vector<int> edge_turn_minimums(const ShapeIndex& index, const std::vector<char>& usable = {});
+std::vector<int> edge_turn_minimums(const ShapeIndex& index, const std::vector<char>& usable = {},
+                                    int per_turn = kDefaultSegmentsPerTurn);
 
 // Whether shape edge `e` is a line on face `f`'s plane: its segments are the edge
 // itself, in space and in the face's (u, v) alike, whatever their count.

@@ -211,7 +211,8 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
                progress: Optional[Callable[[str, int, int], Optional[bool]]] = None,
                read_timeout: Optional[float] = None, best_corners: bool = False,
                min_size: float = 0.0, order: int = 1, sew: bool = False,
-               sizes: Optional[Dict[str, float]] = None, growth_rate: float = 1.3) -> Mesh:
+               sizes: Optional[Dict[str, float]] = None, curvature_segments: int = 8,
+               growth_rate: float = 1.3) -> Mesh:
     """Mesh the faces of a CAD shape, conforming across shared edges.
 
     Args:
@@ -252,7 +253,8 @@ def mesh_shape(brep_text_or_path: str, *, size: float = 0.0,
                                  *_template_integers(t4_ratio, t5_cut_edges, max_quads), bool(smooth),
                                  progress, 0.0 if read_timeout is None else float(read_timeout),
                                  bool(best_corners), float(min_size), _integer(order, "order", 1, 2), bool(sew),
-                                 size_entries, float(growth_rate)))
+                                 size_entries, _integer(curvature_segments, "curvature_segments", 8, 1000),
+                                 float(growth_rate)))
 
 
 def mesh_option_schema() -> List[dict]:

@@ -53,7 +53,7 @@ def mesh_shape(brep_text_or_path: str, *, size: float = ..., faces: Optional[Ite
                progress: Optional[Callable[[str, int, int], Optional[bool]]] = ...,
                read_timeout: Optional[float] = ..., best_corners: bool = ..., min_size: float = ...,
                order: int = ..., sew: bool = ..., sizes: Optional[Dict[str, float]] = ...,
-               growth_rate: float = ...) -> Mesh: ...
+               curvature_segments: int = ..., growth_rate: float = ...) -> Mesh: ...
 
 class SweptMesh:
     nodes: np.ndarray
