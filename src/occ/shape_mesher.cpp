@@ -26,6 +26,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "core/cancellation.h"
 #include "core/elapsed.h"
 #include "core/input_error.h"
 #include "core/mesh/shell_orientation.h"
@@ -185,6 +186,9 @@ class ShapeMeshContext {
       : shape_(shape), options_(options), index_(shape) {}
 
   ShapeMeshResult run() {
+    // Long loops of the stages on this thread look at the cancel flag too; their
+    // heartbeat repeats the stage's start (the faces' workers have their own).
+    const CancellationScope scope(options_.cancel, [this] { report(current_stage_, 0, 1); });
     stage("index", [&] { index_faces(); });
     // Small faces whose quads stay inverted get their edges' counts doubled, and
     // refused faces whose boundary crosses itself only by its chords their crossing
@@ -228,10 +232,13 @@ class ShapeMeshContext {
   template <typename Work>
   void stage(const char* name, const Work& work) {
     throw_if_cancelled();
+    current_stage_ = name;
     report(name, 0, 1);
     const auto start = std::chrono::steady_clock::now();
     try {
       work();
+    } catch (const OperationCancelled&) {
+      throw MeshCancelled("meshing cancelled");
     } catch (const Standard_Failure& failure) {  // OpenCASCADE on a damaged shape; no std::exception
       const std::string what = *failure.GetMessageString() ? failure.GetMessageString() : failure.DynamicType()->Name();
       throw InputError(std::string("OpenCASCADE failed on the shape in stage '") + name + "': " + what +
@@ -432,6 +439,14 @@ class ShapeMeshContext {
         if (reuse_unchanged_face(index_, f, previous_edges_, previous_nodes_, edges_, result_.mesh.nodes, previous[f])) {
           outcomes_[f] = std::move(previous[f]);
         } else {
+          // Inside the face, long loops look at the cancel flag (cancellation.h); the
+          // heartbeat repeats the faces' count, so that a front end whose progress
+          // callback raises the flag is asked while a large face is meshed.
+          const CancellationScope scope(options_.cancel, [&] {
+            if (!options_.progress) return;
+            const std::lock_guard<std::mutex> lock(progress_mutex_);
+            options_.progress(MeshProgress{"mesh faces", done, total});
+          });
           outcomes_[f] = mesh_one_face(index_, f, edges_, result_.mesh.nodes, options_, result_.size);
         }
         if (outcomes_[f].ok) quads += static_cast<long long>(outcomes_[f].mesh.quads.size());
@@ -597,6 +612,7 @@ class ShapeMeshContext {
   std::vector<EdgeNodes> edges_;
   std::vector<EdgeNodes> previous_edges_;  // the last round's, while meshing the next
   std::vector<double> face_sizes_;         // per face, its own size under local sizes (or empty)
+  const char* current_stage_ = "index";    // the stage running, for the heartbeat
   EdgeSpacings spacings_;                  // each edge's last spacing, for the next rounds
   IntervalReport intervals_;               // the round's interval assignment
   int aligned_bands_ = 0;                  // the round's aligned bands (band_alignment.h)

@@ -79,6 +79,21 @@ class MeshShapeTest(unittest.TestCase):
         self.assertEqual({f["route"] for f in m.faces}, {"templates on corners"}, "each face names its route")
         self.assertGreater(m.edge_size, 0, "default size reported")
 
+    def test_a_cancel_acts_inside_a_large_face(self):
+        # One face of about a million quads: while it is meshed the progress callback
+        # is asked again (a heartbeat with no face done yet), and its True stops the
+        # job there, before the face is finished.
+        path = os.path.join(SHAPES, "bspline_patch.brep")
+        calls = []
+
+        def progress(stage, done, total):
+            calls.append((stage, done, total))
+            return stage == "mesh faces" and done == 0 and sum(c[0] == "mesh faces" for c in calls) >= 2
+
+        with self.assertRaises(tquad.Cancelled):
+            tquad.mesh_shape(path, size=0.07, threads=1, progress=progress)
+        self.assertNotIn(("mesh faces", 1, 1), calls, "stopped inside the face")
+
     def test_local_sizes_refine_and_bad_entries_are_value_errors(self):
         path = os.path.join(SHAPES, "cylinder.brep")
         plain = tquad.mesh_shape(path, size=2.0)

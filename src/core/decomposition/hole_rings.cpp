@@ -1,4 +1,5 @@
 #include "core/decomposition/hole_rings.h"
+#include "core/cancellation.h"
 
 #include <algorithm>
 #include <array>
@@ -182,6 +183,7 @@ QuadMesh join_rings(const PlanarDomain& domain, const RingedDomain& ringed, cons
   mesh.quads = ringed.ring_quads;
   const auto whole = [&](NodeId v) { return v < inner_points ? ringed.inner_node[v] : base + (v - inner_points); };
   for (Quad q : inner.quads) {
+    poll_cancellation(1);
     for (NodeId& v : q) v = whole(v);
     mesh.quads.push_back(q);
   }

@@ -1,4 +1,5 @@
 #include "core/decomposition/patch_stitching.h"
+#include "core/cancellation.h"
 
 namespace tquad {
 
@@ -13,6 +14,7 @@ std::string append_patch(QuadMesh& mesh, const std::vector<NodeId>& loop, const 
   const int m = static_cast<int>(loop.size());
   mesh.nodes.insert(mesh.nodes.end(), patch.nodes.begin() + m, patch.nodes.end());
   for (Quad quad : patch.quads) {
+    poll_cancellation(1);
     for (NodeId& v : quad) v = v < m ? loop[v] : base + (v - m);
     mesh.quads.push_back(quad);
   }

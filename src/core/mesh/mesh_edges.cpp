@@ -1,4 +1,5 @@
 #include "core/mesh/mesh_edges.h"
+#include "core/cancellation.h"
 
 #include <algorithm>
 #include <utility>
@@ -10,12 +11,14 @@ MeshEdges::MeshEdges(std::size_t node_count, const std::vector<Quad>& quads) {
   // node's list sorted and its repeats dropped.
   std::vector<std::size_t> first(node_count + 1, 0);
   for (const Quad& q : quads) {
+    poll_cancellation(4);
     for (int i = 0; i < 4; ++i) ++first[static_cast<std::size_t>(std::min(q[i], q[(i + 1) % 4])) + 1];
   }
   for (std::size_t n = 0; n < node_count; ++n) first[n + 1] += first[n];
   std::vector<NodeId> listed(first[node_count]);
   std::vector<std::size_t> next(first.begin(), first.end() - 1);
   for (const Quad& q : quads) {
+    poll_cancellation(4);
     for (int i = 0; i < 4; ++i) {
       const auto [lo, hi] = std::minmax(q[i], q[(i + 1) % 4]);
       listed[next[static_cast<std::size_t>(lo)]++] = hi;

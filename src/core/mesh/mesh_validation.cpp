@@ -1,4 +1,5 @@
 #include "core/mesh/mesh_validation.h"
+#include "core/cancellation.h"
 
 #include <algorithm>
 #include <array>
@@ -48,6 +49,7 @@ std::string check_edges(const QuadMesh& mesh, const std::vector<int>& start) {
   const int boundary_points = start.back();
   const SlottedLists sides = SlottedLists::build(mesh.nodes.size(), [&](auto add) {
     for (const Quad& q : mesh.quads) {
+      poll_cancellation(4);
       for (int i = 0; i < 4; ++i) {
         const NodeId a = q[i], b = q[(i + 1) % 4];
         add(std::min(a, b), (std::max(a, b) << 1) | (a > b ? 1 : 0));

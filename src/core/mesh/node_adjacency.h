@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include "core/cancellation.h"
 #include <cstddef>
 #include <vector>
 
@@ -38,7 +39,10 @@ struct CompressedLists {
 // order.
 inline auto quad_corner_pairs(const std::vector<Quad>& quads) {
   return [&quads](auto add) {
-    for (std::size_t k = 0; k < quads.size(); ++k) for (NodeId n : quads[k]) add(n, static_cast<int>(k));
+    for (std::size_t k = 0; k < quads.size(); ++k) {
+      poll_cancellation(2);
+      for (NodeId n : quads[k]) add(n, static_cast<int>(k));
+    }
   };
 }
 
@@ -112,7 +116,10 @@ struct NodeAdjacency {
     // Each interior edge appears once in each direction, so following directed edges
     // gives every interior node each neighbour exactly once.
     neighbours = CompressedLists::build(nodes, [&](auto add) {
-      for (const Quad& q : quads) for (int i = 0; i < 4; ++i) add(q[i], q[(i + 1) % 4]);
+      for (const Quad& q : quads) {
+        poll_cancellation(2);
+        for (int i = 0; i < 4; ++i) add(q[i], q[(i + 1) % 4]);
+      }
     });
     quads_of = quads_around_nodes(nodes, quads);
   }

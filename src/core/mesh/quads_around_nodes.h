@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include "core/cancellation.h"
 #include <vector>
 
 #include "core/mesh/quad_mesh.h"
@@ -14,6 +15,7 @@ class QuadsAroundNodes {
  public:
   QuadsAroundNodes(std::vector<Quad>& quads, std::size_t nodes) : quads_(quads), around_(nodes) {
     for (std::size_t q = 0; q < quads_.size(); ++q) {
+      poll_cancellation(4);
       for (NodeId n : quads_[q]) around_[n].push_back(static_cast<int>(q));
     }
   }

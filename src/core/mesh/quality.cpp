@@ -1,4 +1,5 @@
 #include "core/mesh/quality.h"
+#include "core/cancellation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -224,6 +225,7 @@ PerQuadQuality per_quad_quality(const std::vector<Vec3>& nodes, const std::vecto
   out.lee_lo.reserve(quads.size());
   out.scaled_jacobian.reserve(quads.size());
   for (const Quad& q : quads) {
+    poll_cancellation(4);
     const std::array<Vec3, 4> p{nodes[q[0]], nodes[q[1]], nodes[q[2]], nodes[q[3]]};
     Vec3 normal;
     if (reference) {

@@ -1,4 +1,5 @@
 #include "core/repair/area_untangling.h"
+#include "core/cancellation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -81,6 +82,7 @@ class AreaUntangler {
     std::vector<char> chosen(param_.size(), 0);
     const CompressedLists& around = adjacency_.quads_of;
     for (const Quad& q : quads_) {
+      poll_cancellation(4);
       bool inverted = false;
       for (int j = 0; j < 4 && !inverted; ++j) inverted = corner_area(q, j, param_, orientation_) <= 0;
       if (!inverted) continue;
@@ -199,6 +201,7 @@ class AreaUntangler {
 int inverted_corners(const std::vector<Quad>& quads, const std::vector<Vec3>& param, double orientation) {
   int inverted = 0;
   for (const Quad& q : quads) {
+    poll_cancellation(4);
     for (int j = 0; j < 4; ++j) inverted += corner_area(q, j, param, orientation) <= 0 ? 1 : 0;
   }
   return inverted;

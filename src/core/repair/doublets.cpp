@@ -1,4 +1,5 @@
 #include "core/repair/doublets.h"
+#include "core/cancellation.h"
 
 #include <algorithm>
 #include <array>
@@ -69,6 +70,7 @@ int merge_doublets(std::vector<Quad>& quads, int fixed, const std::vector<Vec3>&
 bool has_doublet(const std::vector<Quad>& quads, int fixed, std::size_t nodes) {
   std::vector<unsigned char> quads_at(nodes, 0);
   for (const Quad& q : quads) {
+    poll_cancellation(4);
     for (NodeId n : q) quads_at[n] = static_cast<unsigned char>(std::min(quads_at[n] + 1, 3));
   }
   return std::find(quads_at.begin() + std::min<std::size_t>(fixed, nodes), quads_at.end(), 2) != quads_at.end();

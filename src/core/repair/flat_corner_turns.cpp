@@ -1,4 +1,5 @@
 #include "core/repair/flat_corner_turns.h"
+#include "core/cancellation.h"
 
 #include <algorithm>
 #include <utility>
@@ -129,6 +130,7 @@ bool has_flat_lone_corner(const std::vector<Quad>& quads, int fixed, const std::
                           const std::vector<Vec3>& normal) {
   std::vector<int> lone_in(fixed, -1);  // the quad of a node alone in one, -2 if in more
   for (std::size_t q = 0; q < quads.size(); ++q) {
+    poll_cancellation(4);
     for (NodeId n : quads[q]) {
       if (n < fixed) lone_in[n] = lone_in[n] == -1 ? static_cast<int>(q) : -2;
     }

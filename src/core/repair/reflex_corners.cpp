@@ -1,4 +1,5 @@
 #include "core/repair/reflex_corners.h"
+#include "core/cancellation.h"
 
 #include <vector>
 
@@ -7,6 +8,7 @@ namespace tquad {
 int split_reflex_corner_quads(QuadMesh& mesh, int boundary_points, const Vec3& normal) {
   std::vector<int> uses(mesh.nodes.size(), 0);
   for (const Quad& q : mesh.quads) {
+    poll_cancellation(4);
     for (NodeId n : q) ++uses[n];
   }
   int split = 0;

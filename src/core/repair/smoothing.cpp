@@ -10,6 +10,7 @@
 #include "core/repair/area_untangling.h"
 #include "core/repair/doublets.h"
 #include "core/geometry/fitted_surface.h"
+#include "core/cancellation.h"
 #include "core/geometry/mean_value_surface.h"
 #include "core/geometry/max_min_ascent.h"
 #include "core/mesh/mesh_validation.h"
@@ -231,6 +232,7 @@ template <typename Nodes>
 CornerScan scan_corners(const std::vector<Quad>& quads, int fixed, const Nodes& nodes, double threshold) {
   CornerScan scan{std::vector<bool>(nodes.size(), false), 0};
   for (const Quad& q : quads) {
+    poll_cancellation(4);
     const QuadCorners c = corners_of(q, nodes);
     scan.inverted += inverted_corners(c);
     // A collapsed quad's angles can all be sound (is_collapsed): its nodes move too.
@@ -267,8 +269,10 @@ class Smoother {
     for (int pass = 0; pass < options.passes; ++pass) {
       long long moves = 0;
       for (int n = fixed_; n < count; ++n) {
+        poll_cancellation(1);
         if (!active[n] || nodes_.singular(n)) continue;  // a node on a pole stays there
         if (!movable_.empty() && !movable_[n]) continue;
+        poll_cancellation(32);  // a visit: the Laplacian, perhaps an ascent
         // First the mean of the neighbours; then, where a corner stays poor, the
         // steepest ascent of the worst corner from wherever the Laplacian left the
         // node. With the ascent only where the Laplacian failed, the Laplacian's
@@ -589,6 +593,7 @@ namespace {
 double orientation_in_coordinates(const std::vector<Quad>& quads, const std::vector<Vec3>& param) {
   double area = 0;
   for (const Quad& q : quads) {
+    poll_cancellation(4);
     const Vec3 d1 = param[q[2]] - param[q[0]], d2 = param[q[3]] - param[q[1]];
     area += d1.x * d2.y - d1.y * d2.x;
   }
@@ -608,6 +613,7 @@ SurfaceFolds folds_on_surface(const std::vector<Quad>& quads, const std::vector<
   SurfaceFolds folds;
   const NormalsInPlace nodes{position, normal};
   for (const Quad& q : quads) {
+    poll_cancellation(4);
     const QuadCorners c = corners_of(q, nodes);
     folds.inverted += inverted_corners(c);
     folds.collapsed += c.collapsed ? 1 : 0;
@@ -666,6 +672,7 @@ SmoothingResult smooth_mesh_near(const std::vector<Quad>& quads, int fixed, std:
   // Folds unfolded among the quads touching the region alone, by its nodes alone.
   std::vector<Quad> touching;
   for (const Quad& q : quads) {
+    poll_cancellation(4);
     if (std::any_of(q.begin(), q.end(), [&](NodeId n) { return region[n]; })) touching.push_back(q);
   }
   const PlaceNode in_region = [&](int n, const Vec3& p, Vec3& at, Vec3& out_normal) {

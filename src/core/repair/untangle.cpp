@@ -1,4 +1,5 @@
 #include "core/repair/untangle.h"
+#include "core/cancellation.h"
 
 #include <algorithm>
 #include <array>
@@ -310,6 +311,7 @@ class Untangler {
 // the plane normal or, for a curved region, by the quad's own diagonal normal.
 bool has_bad_corner(const QuadMesh& mesh, const std::optional<Vec3>& plane_normal) {
   for (const Quad& q : mesh.quads) {
+    poll_cancellation(4);
     const Vec3 p[4] = {mesh.nodes[q[0]], mesh.nodes[q[1]], mesh.nodes[q[2]], mesh.nodes[q[3]]};
     const Vec3 normal = plane_normal ? *plane_normal : cross(p[2] - p[0], p[3] - p[1]);
     const Vec3 e[4] = {p[1] - p[0], p[2] - p[1], p[3] - p[2], p[0] - p[3]};

@@ -1,4 +1,5 @@
 #include "core/templates/mapped_grid.h"
+#include "core/cancellation.h"
 
 #include <vector>
 
@@ -46,6 +47,7 @@ void mesh_mapped_grid(const Region& region, MeshBuilder& builder) {
     }
     for (int i = 0; i < n; ++i) quads.push_back({below[i], below[i + 1], row[i + 1], row[i]});
     below.swap(row);
+    poll_cancellation(static_cast<std::size_t>(n));
   }
 }
 

@@ -1,4 +1,5 @@
 #include "core/templates/mesher.h"
+#include "core/cancellation.h"
 
 #include "core/templates/count_fitting.h"
 
@@ -48,6 +49,7 @@ void realize(const Region& region, const PlanNode& plan, MeshBuilder& builder,
   }
   const std::vector<Region> children = template_row(plan.choice.kind).realize(canonical, builder, options);
   for (std::size_t i = 0; i < children.size(); ++i) {
+    poll_cancellation(64);
     realize(children[i], plan.children[i], builder, options);
   }
 }

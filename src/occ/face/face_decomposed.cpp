@@ -1,4 +1,5 @@
 #include "occ/face/face_decomposed.h"
+#include "core/cancellation.h"
 
 #include <BRepAdaptor_Surface.hxx>
 
@@ -140,6 +141,7 @@ class FaceChart {
     std::vector<Vec3> own = own_;
     out.interior.reserve(mesh.nodes.size() - n);
     for (std::size_t i = n; i < mesh.nodes.size(); ++i) {
+      poll_cancellation(8);
       own.push_back(chart_.to_own(mesh.nodes[i]));
       const Vec3 uv = chart_.surface_uv(own.back());
       out.interior.push_back(to_vec3(surface_.Value(uv.x, uv.y)));

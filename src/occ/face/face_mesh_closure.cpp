@@ -1,4 +1,5 @@
 #include "occ/face/face_mesh_closure.h"
+#include "core/cancellation.h"
 
 #include <BRep_Tool.hxx>
 #include <TopExp_Explorer.hxx>
@@ -58,15 +59,27 @@ std::string face_mesh_closure_problem(const ShapeIndex& index, int face, const s
     const auto i = static_cast<std::size_t>(local);
     return i < loop ? static_cast<GlobalNode>(mesh.boundary_nodes[i]) : kInterior + (i - loop);
   };
-  std::unordered_map<EdgeKey, int, EdgeKeyHash> uses;
-  uses.reserve(2 * mesh.quads.size() + 8);
+  // Every quad edge once per quad, sorted so that equal edges are neighbours (a sort of
+  // one flat array: a hash map of millions of edges cost a sizeable share of a large
+  // face's meshing, most of it allocating and freeing its nodes).
+  std::vector<EdgeKey> uses;
+  uses.reserve(4 * mesh.quads.size());
   for (const Quad& q : mesh.quads) {
-    for (int k = 0; k < 4; ++k) ++uses[edge_key(global(q[k]), global(q[(k + 1) % 4]))];
+    poll_cancellation(8);
+    for (int k = 0; k < 4; ++k) uses.push_back(edge_key(global(q[k]), global(q[(k + 1) % 4])));
   }
+  const auto before = [](const EdgeKey& a, const EdgeKey& b) { return a.low != b.low ? a.low < b.low : a.high < b.high; };
+  std::sort(uses.begin(), uses.end(), before);
+  poll_cancellation(uses.size());
   // Inside: two quads, no edge segment. On the boundary: one quad, one segment. Two
   // edges of one segment each between the same two nodes (a seam an IGES file gives
   // as two edges) are one mesh edge between two quads, like a seam.
-  for (const auto& [key, count] : uses) {
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i + 1;
+    while (j < uses.size() && uses[j] == uses[i]) ++j;
+    const EdgeKey& key = uses[i];
+    const int count = static_cast<int>(j - i);
+    i = j;
     const auto it = expected.find(key);
     const int segments = it == expected.end() ? 0 : it->second;
     if (count > 2) return name + ": its mesh edge from " + edge_text(key) + " is in " + std::to_string(count) + " quads";
@@ -78,7 +91,9 @@ std::string face_mesh_closure_problem(const ShapeIndex& index, int face, const s
     return name + ": its mesh edge from " + edge_text(key) + " on the face's edge is in two quads";
   }
   for (const auto& [key, segments] : expected) {
-    if (uses.find(key) == uses.end()) return name + ": its edge segment from " + edge_text(key) + " is in no quad of its mesh";
+    if (!std::binary_search(uses.begin(), uses.end(), key, before)) {
+      return name + ": its edge segment from " + edge_text(key) + " is in no quad of its mesh";
+    }
   }
   return {};
 }

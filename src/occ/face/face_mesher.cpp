@@ -1,4 +1,5 @@
 #include "occ/face/face_mesher.h"
+#include "core/cancellation.h"
 
 #include <BRepAdaptor_Surface.hxx>
 #include <IntCurvesFace_ShapeIntersector.hxx>
@@ -268,6 +269,7 @@ void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surfac
   out.scaled_jacobian.clear();
   out.scaled_jacobian.reserve(out.quads.size());
   for (const Quad& q : out.quads) {
+    poll_cancellation(16);
     const std::array<Vec3, 4> corner{xyz[q[0]], xyz[q[1]], xyz[q[2]], xyz[q[3]]};
     Vec3 centre, centre_param, mean_normal;
     for (int i = 0; i < 4; ++i) {
@@ -327,6 +329,7 @@ void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surfac
   } else {
     normals.resize(param.size());
     for (std::size_t i = 0; i < param.size(); ++i) {
+      poll_cancellation(16);
       normals[i] = outer_normal(surface, reversed, polar ? polar_to_uv(*polar, param[i]) : param[i]);
     }
   }

@@ -1,5 +1,7 @@
 #include "occ/face/face_route.h"
 
+#include "core/cancellation.h"
+
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 
@@ -46,6 +48,7 @@ struct InvertedQuadsError : FaceRefusalError {
 bool has_quad_over_curvature(const FaceMeshResult& mesh) {
   if (mesh.normal.size() != mesh.boundary_nodes.size() + mesh.interior.size()) return false;
   for (const Quad& q : mesh.quads) {
+    poll_cancellation(4);
     for (int i = 0; i < 4; ++i) {
       for (int j = i + 1; j < 4; ++j) {
         const Vec3 &a = mesh.normal[q[i]], &b = mesh.normal[q[j]];
@@ -522,6 +525,8 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
       outcome.refine_edges = edges_of_crossing_chords(index, f, outcome.boundary);
       outcome.finer_edges_may_help = !outcome.refine_edges.empty();
     }
+  } catch (const OperationCancelled&) {
+    throw;  // the user's: the stage ends the job
   } catch (const std::bad_alloc&) {
     outcome.reason = std::string("face ") + std::to_string(f) + ": internal failure: out of memory";
     outcome.code = RefusalCode::internal;
