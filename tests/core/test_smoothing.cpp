@@ -192,6 +192,34 @@ TEST(HoleRings, AHoleGetsMappedRingsAndNoFanOnItsRim) {
   EXPECT_EQ(summarize_quality(mesh, kUp).inverted, 0);
 }
 
+TEST(HoleRings, AFineRimGetsGradedRingsOutToTheOutlinesSpacing) {
+  // A 100 x 60 outline of spacing 5 and a hole of radius 10 of spacing about 0.5 (a
+  // local size on it): rings each kRingGrowth times as thick as the one inside, more
+  // than the two a uniform rim gets, and a mesh whose rim nodes lie in no fan.
+  PlanarDomain d;
+  d.loops.push_back(square_loop(0, 0, 100, 60, 16));
+  d.loops.push_back(circle_hole({50, 30}, 10.0, 126));
+  const RingedDomain ringed = ring_holes(d);
+  EXPECT_GT(ringed.rings, kHoleRingLayers);
+  EXPECT_LE(ringed.rings, kMaxHoleRingLayers);
+  // Ring k's nodes: ring_nodes[(k - 1) n + i]; along the x axis from the centre, each
+  // ring's thickness over the one inside it is the growth rate.
+  const int n = 126;
+  std::vector<double> radius{10.0};
+  for (int k = 0; k < ringed.rings; ++k) {
+    const Vec3& p = ringed.ring_nodes[static_cast<std::size_t>(k) * n];
+    radius.push_back(std::hypot(p.x - 50, p.y - 30));
+  }
+  for (std::size_t k = 2; k < radius.size(); ++k) {
+    EXPECT_NEAR((radius[k] - radius[k - 1]) / (radius[k - 1] - radius[k - 2]), kRingGrowth, 0.02) << k;
+  }
+  const QuadMesh mesh = mesh_planar_domain(d, 5.0);
+  ASSERT_EQ(check_domain_mesh(mesh, loop_sizes(d)), "");
+  const std::vector<int> around = quads_per_node(mesh);
+  for (int i = 0; i < n; ++i) EXPECT_EQ(around[d.offset(1) + i], 2) << "rim node " << i << " lies in a fan";
+  EXPECT_EQ(summarize_quality(mesh, kUp).inverted, 0);
+}
+
 TEST(HoleRings, NoRingWhereTheHoleNearlyTouchesTheOutline) {
   PlanarDomain d;
   d.loops.push_back(square_loop(0, 0, 4, 4, 8));

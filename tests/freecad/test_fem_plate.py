@@ -55,8 +55,10 @@ class PlateWithHoleTest(unittest.TestCase):
         FreeCAD.closeDocument(self.doc.Name)
         shutil.rmtree(self.work_dir, ignore_errors=True)
 
-    def _analysis(self, shape, **mesh_options):
-        """Plate, analysis, solver, thickness, material, constraints, TemplateQuad mesh."""
+    def _analysis(self, shape, size=MESH_SIZE, region=None, **mesh_options):
+        """Plate, analysis, solver, thickness, material, constraints, TemplateQuad mesh;
+        `region`: (length, edge predicate), a FEM mesh region on the plate's edges it
+        accepts, meshed with."""
         import ObjectsFem
         from freecad.templatequad import make_mesh
 
@@ -78,7 +80,14 @@ class PlateWithHoleTest(unittest.TestCase):
         force.Direction = (plate, [bottom])  # the y = 0 edge runs along x
         analysis.addObject(force)
 
-        mesh = make_mesh(self.doc, plate, size=MESH_SIZE, **mesh_options)
+        mesh = make_mesh(self.doc, plate, size=size, **mesh_options)
+        if region is not None:
+            length, accepts = region
+            refined = ObjectsFem.makeMeshRegion(self.doc, mesh, length)
+            refined.References = [(plate, tuple(f"Edge{i + 1}" for i, e in enumerate(plate.Shape.Edges)
+                                                if accepts(e)))]
+            mesh.Proxy.request_mesh(mesh)
+            self.assertEqual(mesh.Proxy.last_error, "")
         analysis.addObject(mesh)
         self.doc.recompute()
         if force.DirectionVector.x < 0:  # the edge's orientation decides the sign
@@ -155,11 +164,11 @@ class PlateWithHoleTest(unittest.TestCase):
         mesh.AcceptIncomplete = True
         self.assertEqual(fea.check_prerequisites(), "", "accepted by the user: no stop")
 
-    def _solve(self, shape, **mesh_options):
+    def _solve(self, shape, size=MESH_SIZE, region=None, **mesh_options):
         """Meshes, solves with CalculiX, returns (mesh object, result object)."""
         from femtools import ccxtools
 
-        analysis, solver, mesh = self._analysis(shape, **mesh_options)
+        analysis, solver, mesh = self._analysis(shape, size, region, **mesh_options)
         self.assertEqual(mesh.FemMesh.QuadrangleCount, mesh.FemMesh.FaceCount, "all quads")
 
         fea = ccxtools.FemToolsCcx(analysis, solver)
@@ -193,6 +202,38 @@ class PlateWithHoleTest(unittest.TestCase):
         # A closed rim of n segments: n corners and, on the circle too, n middles.
         self.assertGreater(len(rim & corners), 8)
         self.assertEqual(len(rim - corners), len(rim & corners), "every rim middle on the circle")
+
+    def test_a_mesh_region_on_the_hole_gives_the_fine_mesh_stress_concentration(self):
+        """A FEM mesh region of 0.5 mm on the hole's rim of the one-face plate meshed at
+        5 mm: Kt within 2% of a uniform 0.5 mm mesh's, with under a fifth of its quads."""
+        def plate():
+            hole = Part.makeCylinder(HOLE_D / 2, 1, FreeCAD.Vector(*HOLE_CENTRE, -0.5))
+            return Part.makePlane(100, WIDTH).cut(hole)
+
+        def on_rim(edge):
+            return edge.Curve.TypeId == "Part::GeomCircle"
+
+        fine_mesh, fine = self._solve(plate(), size=0.5)
+        fine_kt, fine_quads = self._kt(fine), fine_mesh.FemMesh.FaceCount
+        FreeCAD.closeDocument(self.doc.Name)
+        self.doc = FreeCAD.newDocument("TemplateQuadPlateRegion")
+        local_mesh, local = self._solve(plate(), size=5.0, region=(0.5, on_rim))
+        local_kt = self._kt(local)
+        print(f"\nplate with hole, one face: uniform 0.5 mm {fine_quads} quads, Kt "
+              f"{fine_kt:.3f}; 5 mm with a 0.5 mm region on the rim {local_mesh.FemMesh.FaceCount} quads, "
+              f"Kt {local_kt:.3f} (ratio {local_kt / fine_kt:.4f})")
+        self.assertLess(5 * local_mesh.FemMesh.FaceCount, fine_quads)
+        self.assertLess(abs(local_kt / fine_kt - 1.0), 0.02)
+
+    def _kt(self, result):
+        """The peak von Mises stress on the hole edge over the nominal net stress."""
+        nodes = result.Mesh.FemMesh.Nodes
+        von_mises = dict(zip(result.NodeNumbers, result.vonMises))
+        on_hole = [s for n, s in von_mises.items()
+                   if abs(math.hypot(nodes[n].x - HOLE_CENTRE[0], nodes[n].y - HOLE_CENTRE[1])
+                          - HOLE_D / 2) < 1e-3]
+        self.assertGreater(len(on_hole), 20, "nodes on the hole edge")
+        return max(on_hole) / (FORCE / ((WIDTH - HOLE_D) * THICKNESS))
 
     def _check_stress_concentration(self, shape, label, **mesh_options):
         mesh, result = self._solve(shape, **mesh_options)

@@ -28,8 +28,14 @@ class WorkbenchGuiTest(unittest.TestCase):
         self.doc = FreeCAD.newDocument("TemplateQuadGui")
         FreeCADGui.activateWorkbench("TemplateQuadWorkbench")
         _process_events()
+        # The large runs here are meant: no question before them (one test asks).
+        from freecad.templatequad import progress_dialog
+        self.preferences = FreeCAD.ParamGet(progress_dialog.PREFERENCES)
+        self.preferences.SetInt(progress_dialog.ASK_ABOVE_QUADS, 0)
 
     def tearDown(self):
+        from freecad.templatequad import progress_dialog
+        self.preferences.RemInt(progress_dialog.ASK_ABOVE_QUADS)
         gui_doc = FreeCADGui.getDocument(self.doc.Name)
         if gui_doc.getInEdit():
             gui_doc.resetEdit()
@@ -258,6 +264,34 @@ class WorkbenchGuiTest(unittest.TestCase):
         self.assertEqual(mesh.CharacteristicLengthMax.Value, 20.0,
                          "the size of the mesh kept is put back")
         self.assertEqual(mesh.FemMesh.FaceCount, before, "the previous mesh is kept")
+
+    def test_a_run_above_the_estimate_limit_asks_first(self):
+        """Above the AskAboveQuads preference the estimated quads and memory are shown
+        and the user asked: No leaves the document as it was, Yes meshes."""
+        from PySide import QtGui
+        from freecad.templatequad import make_mesh, progress_dialog
+        part = self.doc.addObject("Part::Box", "AskedBox")
+        part.Length = part.Width = part.Height = 10
+        self.doc.recompute()
+        self.preferences.SetInt(progress_dialog.ASK_ABOVE_QUADS, 1000)  # 600 mm2 at 0.5 mm: 2400
+        asked = []
+        question = QtGui.QMessageBox.question
+        try:
+            QtGui.QMessageBox.question = lambda *args: asked.append(args[2]) or QtGui.QMessageBox.No
+            names = sorted(o.Name for o in self.doc.Objects)
+            self.assertIsNone(make_mesh(self.doc, part, size=0.5), "No: nothing meshed")
+            self.assertEqual(sorted(o.Name for o in self.doc.Objects), names, "and no object left")
+            self.assertEqual(len(asked), 1)
+            self.assertIn("AskedBox: about 2,400 quads and 2 MB of memory", asked[0])
+            self.assertIn("Mesh anyway?", asked[0])
+            QtGui.QMessageBox.question = lambda *args: asked.append(args[2]) or QtGui.QMessageBox.Yes
+            mesh = make_mesh(self.doc, part, size=0.5)
+            self.assertGreater(mesh.FemMesh.FaceCount, 1000, "Yes: meshed")
+            asked.clear()
+            make_mesh(self.doc, part, size=5.0)
+            self.assertEqual(asked, [], "under the limit: no question")
+        finally:
+            QtGui.QMessageBox.question = question
 
     def test_large_meshes_are_drawn_without_their_edges(self):
         from freecad.templatequad import make_mesh

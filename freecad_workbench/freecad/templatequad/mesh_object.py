@@ -367,11 +367,8 @@ class TemplateQuadMesh(StatelessProxy):
                 return
             if mesh.refused_faces and not obj.KeepGoing:
                 raise ValueError(meshing.refusal_error(mesh))
-        except meshing.TquadMissing as error:
-            self._fail(obj, str(error).strip())
-            return
-        except ValueError as error:
-            self._fail(obj, meshing.explain_tquad_error(str(error).strip()))
+        except (meshing.TquadMissing, ValueError) as error:
+            self._fail(obj, error)
             return
 
         obj.FemMesh = meshing.to_femmesh(mesh)
@@ -421,11 +418,8 @@ class TemplateQuadMesh(StatelessProxy):
                 raise ValueError("%d solid(s) not swept: %s. Turn on 'Mesh the other faces' (KeepGoing) "
                                  "to sweep the rest." % (len(swept.refused_solids),
                                                          "; ".join(meshing.refused_solid_lines(swept))))
-        except meshing.TquadMissing as error:
-            self._fail(obj, str(error).strip())
-            return
-        except ValueError as error:
-            self._fail(obj, meshing.explain_tquad_error(str(error).strip()))
+        except (meshing.TquadMissing, ValueError) as error:
+            self._fail(obj, error)
             return
         obj.FemMesh = meshing.to_femmesh_volumes(swept)
         obj.TemplateTrees = [meshing.swept_solid_line(s) for s in swept.solids]
@@ -451,9 +445,11 @@ class TemplateQuadMesh(StatelessProxy):
         for line in obj.RefusedFaces:
             FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {obj.Part.Label} {line} (not swept)\n")
 
-    def _fail(self, obj, reason):
-        """A user's error: the mesh emptied, the reason kept (``last_error``, Quality)
-        and printed once as one line."""
+    def _fail(self, obj, error):
+        """A user's error (tquad's ValueError, or the module missing): the mesh emptied,
+        the reason kept (``last_error``, Quality) and printed once as one line."""
+        text = str(error).strip()
+        reason = text if isinstance(error, meshing.TquadMissing) else meshing.explain_tquad_error(text)
         self.last_error = reason
         self._clear(obj)
         self.meshed_inputs = None
@@ -493,7 +489,11 @@ class TemplateQuadMesh(StatelessProxy):
         shape = self._source_shape(obj)
         run = meshing.run_plain
         if FreeCAD.GuiUp:
-            from .progress_dialog import run_with_progress
+            from .progress_dialog import confirm_large_run, run_with_progress
+            # A run above the preference's estimate asks first; No is a cancel.
+            quads, memory = meshing.estimated_run(shape, obj.CharacteristicLengthMax.Value)
+            if not confirm_large_run(obj.Part.Label, quads, memory):
+                return None
             run = run_with_progress
         options = mesh_options(obj)
         return run(lambda progress: meshing.mesh_shape(shape, keep_going=True, progress=progress, **options),

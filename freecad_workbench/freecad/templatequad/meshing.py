@@ -356,6 +356,21 @@ def region_sizes(regions):
     return sizes or None
 
 
+#: Peak memory per quad while faces of millions of quads are meshed (as measured on
+#: such runs): what the estimate before a large run shows.
+PEAK_BYTES_PER_QUAD = 700
+
+
+def estimated_run(shape, size: float):
+    """estimated_run(): (quads, bytes) that meshing `shape` at `size` (0: automatic, the
+    bounding-box diagonal / 25) takes about: its faces' area over the size squared (a
+    square grid of that size), and PEAK_BYTES_PER_QUAD each. Curved and short edges
+    and local sizes add quads the estimate does not count."""
+    h = size if size > 0 else shape.BoundBox.DiagonalLength / 25.0
+    quads = int(round(shape.Area / (h * h))) if h > 0 else 0
+    return quads, quads * PEAK_BYTES_PER_QUAD
+
+
 def size_warning(mesh) -> str:
     """size_warning(): "" unless the element size exceeds the part, which then gets the
     fewest elements its edges' curvature and faces allow (the size has no say)."""

@@ -12,10 +12,39 @@ blocks the other.
 """
 import threading
 
+import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
 from . import meshing
+
+#: Where the user's TemplateQuad preferences live, and the one that sets above how
+#: many estimated quads a run asks first (0: never ask).
+PREFERENCES = "User parameter:BaseApp/Preferences/Mod/TemplateQuad"
+ASK_ABOVE_QUADS = "AskAboveQuads"
+ASK_ABOVE_DEFAULT = 1_000_000
+
+
+def _amount(n: int, giga: str, unit: str) -> str:
+    """"2,400 quads", "8.2 million quads"; bytes as "350 MB", "5.7 GB"."""
+    if unit == "bytes":
+        return f"{n / 1e9:.1f}{giga}" if n >= 1e9 else f"{n / 1e6:.0f} MB"
+    return f"{n / 1e6:.1f} million {unit}" if n >= 1e6 else f"{n:,} {unit}"
+
+
+def confirm_large_run(label: str, quads: int, memory: int) -> bool:
+    """Whether to mesh: True at once for an estimate up to the preference; above it the
+    user is shown the estimated quads and memory and asked (No is the default)."""
+    limit = FreeCAD.ParamGet(PREFERENCES).GetInt(ASK_ABOVE_QUADS, ASK_ABOVE_DEFAULT)
+    if limit <= 0 or quads <= limit:
+        return True
+    buttons = QtGui.QMessageBox.Yes | QtGui.QMessageBox.No
+    answer = QtGui.QMessageBox.question(
+        FreeCADGui.getMainWindow(), "TemplateQuad",
+        f"{label}: about {_amount(quads, '', 'quads')} and {_amount(memory, ' GB', 'bytes')} of memory "
+        f"at this element size (more than {limit:,} quads). Mesh anyway?", buttons, QtGui.QMessageBox.No)
+    return answer == QtGui.QMessageBox.Yes
+
 
 #: A mesh taking less than this many milliseconds shows no dialog at all.
 SHOW_AFTER_MS = 400

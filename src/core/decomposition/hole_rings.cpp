@@ -51,10 +51,23 @@ class PointGrid {
   std::unordered_map<long long, std::vector<std::pair<Vec3, int>>> cells_;
 };
 
+// How far ring `layer` lies from the rim, in rim spacings: one spacing per ring
+// (square quads), or with `graded` rings each kRingGrowth times as thick as the one
+// inside it.
+double ring_offset(int layer, bool graded) {
+  return graded ? (std::pow(kRingGrowth, layer) - 1.0) / (kRingGrowth - 1.0) : static_cast<double>(layer);
+}
+
+double mean_spacing(const std::vector<Vec3>& points) {
+  double sum = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) sum += distance(points[i], points[(i + 1) % points.size()]);
+  return points.empty() ? 0.0 : sum / static_cast<double>(points.size());
+}
+
 // Hole loop `points` (clockwise, the domain on its left) offset into the domain by
-// `layer` times each point's spacing, along the bisector of its sides' normals (the
+// `factor` times each point's spacing, along the bisector of its sides' normals (the
 // miter at most twice the thickness).
-std::vector<Vec3> offset_loop(const std::vector<Vec3>& points, int layer) {
+std::vector<Vec3> offset_loop(const std::vector<Vec3>& points, double factor) {
   const std::size_t n = points.size();
   std::vector<Vec3> out(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -68,7 +81,7 @@ std::vector<Vec3> offset_loop(const std::vector<Vec3>& points, int layer) {
     const double lm = norm(m);
     m = lm > 0 ? (1.0 / lm) * m : n1;
     const double miter = 1.0 / std::max(0.5, dot(m, n1));
-    out[i] = p + (layer * 0.5 * (l1 + l2) * miter) * m;
+    out[i] = p + (factor * 0.5 * (l1 + l2) * miter) * m;
   }
   return out;
 }
@@ -92,17 +105,29 @@ bool ring_quads_fit(const std::vector<Vec3>& inside, const std::vector<Vec3>& ou
   return true;
 }
 
+// The rings hole `loop` asks for: `layers`, or, where its rim is over
+// kGradedRingContrast times finer than the outer loop (a local size on the hole), as
+// many graded rings as reach the outer loop's spacing: the fine rim's
+// quads then grow outward by the growth rate instead of stretching across the domain
+// (kMaxHoleRingLayers at most). Returns {count, graded}.
+std::pair<int, bool> wanted_rings(const PlanarDomain& domain, int loop, int layers) {
+  const double rim = mean_spacing(domain.loops[loop].points), outer = mean_spacing(domain.loops[0].points);
+  if (!(rim > 0) || !(outer > kGradedRingContrast * rim)) return {layers, false};
+  const int count = static_cast<int>(std::ceil(std::log(outer / rim) / std::log(kRingGrowth)));
+  return {std::min(kMaxHoleRingLayers, std::max(layers, count)), true};
+}
+
 // How many rings hole `loop` takes (0 to `layers`).
-int rings_that_fit(const PlanarDomain& domain, const PointGrid& grid, int loop, int layers) {
+int rings_that_fit(const PlanarDomain& domain, const PointGrid& grid, int loop, int layers, bool graded) {
   const std::vector<Vec3>& rim = domain.loops[loop].points;
   const double spacing = largest_spacing(rim);
   for (int count = layers; count > 0; --count) {
     // Room for this hole's rings, a neighbour's as many, and one more ring between.
-    const double clearance = (2 * count + 1) * spacing;  // at most `cell`, by its choice
+    const double clearance = (2 * ring_offset(count, graded) + 1) * spacing;  // at most `cell`, by its choice
     bool fits = true;
     std::vector<Vec3> inside = rim;
     for (int layer = 1; layer <= count && fits; ++layer) {
-      const std::vector<Vec3> outside = offset_loop(rim, layer);
+      const std::vector<Vec3> outside = offset_loop(rim, ring_offset(layer, graded));
       fits = ring_quads_fit(inside, outside);
       inside = outside;
     }
@@ -126,8 +151,11 @@ RingedDomain ring_holes(const PlanarDomain& domain, int layers) {
   if (domain.hole_count() == 0 || layers <= 0) return without_rings(domain);
   // Cells as large as the largest clearance asked for, so a query looks one cell around.
   double cell = 0;
+  std::vector<std::pair<int, bool>> wanted(domain.loop_count(), {0, false});
   for (int l = 1; l < domain.loop_count(); ++l) {
-    cell = std::max(cell, (2 * layers + 1) * largest_spacing(domain.loops[l].points));
+    wanted[l] = wanted_rings(domain, l, layers);
+    cell = std::max(cell, (2 * ring_offset(wanted[l].first, wanted[l].second) + 1) *
+                              largest_spacing(domain.loops[l].points));
   }
   if (!(cell > 0) || !std::isfinite(cell)) return without_rings(domain);
   const PointGrid grid(domain, cell);
@@ -139,12 +167,13 @@ RingedDomain ring_holes(const PlanarDomain& domain, int layers) {
   for (int l = 1; l < domain.loop_count(); ++l) {
     const DomainLoop& hole = domain.loops[l];
     const int n = static_cast<int>(hole.points.size());
-    const int count = rings_that_fit(domain, grid, l, layers);
+    const auto [asked, graded] = wanted[l];
+    const int count = rings_that_fit(domain, grid, l, asked, graded);
     std::vector<NodeId> inside(n);
     for (int i = 0; i < n; ++i) inside[i] = domain.offset(l) + i;
     DomainLoop outermost = hole;
     for (int layer = 1; layer <= count; ++layer) {
-      outermost.points = offset_loop(hole.points, layer);
+      outermost.points = offset_loop(hole.points, ring_offset(layer, graded));
       std::vector<NodeId> outside(n);
       for (int i = 0; i < n; ++i) {
         outside[i] = first_ring_node + static_cast<NodeId>(r.ring_nodes.size());

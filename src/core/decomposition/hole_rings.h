@@ -10,6 +10,10 @@
 // (the outer loop and the rings' outer loops as holes) is then decomposed as usual,
 // with its transitions off the rim.
 //
+// A rim over kGradedRingContrast times finer than the outer loop gets graded
+// rings, each kRingGrowth times as thick as the one inside it, until they reach the
+// outer loop's spacing: a local size on the hole then grows outward at that rate.
+//
 // A hole gets fewer rings, or none, when they would not fit: a ring quad with a poor
 // corner (a notch in the rim), or the rings coming within one more ring's thickness of
 // another loop's points (both sides' rings included). If the domain left over is
@@ -25,6 +29,16 @@ namespace tquad {
 
 // Rings per hole, where they fit.
 constexpr int kHoleRingLayers = 2;
+// A hole whose rim is much finer than the outer loop (a local size on it) gets graded
+// rings instead, each this many times as thick as the one inside it (the growth rate's
+// default, local_sizes.h), as many as reach the outer loop's spacing, at most
+// kMaxHoleRingLayers.
+constexpr double kRingGrowth = 1.3;
+constexpr int kMaxHoleRingLayers = 12;
+// How much finer than the outer loop a rim must be for graded rings: that of a local
+// size, while a hole merely refined for its curvature (a small circle's eight
+// segments) keeps its two square rings.
+constexpr double kGradedRingContrast = 4.0;
 
 struct RingedDomain {
   // The domain left inside: the outer loop, and per hole its outermost ring (or the
