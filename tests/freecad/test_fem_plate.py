@@ -225,6 +225,77 @@ class PlateWithHoleTest(unittest.TestCase):
         self.assertLess(5 * local_mesh.FemMesh.FaceCount, fine_quads)
         self.assertLess(abs(local_kt / fine_kt - 1.0), 0.02)
 
+    def test_a_pressure_on_a_mesh_group_is_carried_by_a_held_group(self):
+        """FEM mesh groups on the four-face plate: the face above the hole as a group of
+        elements, the y = 0 edge (no node of that face) as a group of nodes. The mesh
+        exported with its groups is solved by CalculiX with a pressure on the face
+        group's elements and the edge group held: the edge's total reaction equals the
+        pressure times the group's mesh area, so the load reached exactly the group's
+        elements. (A held node of a loaded element would keep its share of the load
+        out of the reaction.)"""
+        import subprocess
+
+        import ObjectsFem
+        from freecad.templatequad import commands, make_mesh
+
+        shape = Part.Shape()
+        shape.read(PLATE_BREP)
+        plate = self.doc.addObject("Part::Feature", "Plate")
+        plate.Shape = shape
+        self.doc.recompute()
+        mesh = make_mesh(self.doc, plate, size=5.0)
+        # The face above the hole: its centre lies on x = 50, above y = 30.
+        loaded = [i for i, f in enumerate(shape.Faces)
+                  if abs(f.CenterOfMass.x - 50.0) < 1e-6 and f.CenterOfMass.y > 30.0]
+        self.assertEqual(len(loaded), 1)
+        faces = ObjectsFem.makeMeshGroup(self.doc, mesh, True, "Loaded")
+        faces.Label = "Loaded"
+        faces.References = [(plate, tuple(f"Face{i + 1}" for i in loaded))]
+        held = ObjectsFem.makeMeshGroup(self.doc, mesh, True, "Held")
+        held.Label = "Held"
+        held.References = [(plate, (_edge_name(plate, lambda e: e.BoundBox.YMax < 1e-6),))]
+        mesh.Proxy.request_mesh(mesh)
+        self.assertEqual(mesh.Proxy.last_error, "")
+
+        femmesh = mesh.FemMesh
+        group = next(g for g in femmesh.Groups if femmesh.getGroupName(g) == "Loaded"
+                     and femmesh.getGroupElementType(g) == "Face")
+        area = 0.0
+        for element in femmesh.getGroupElements(group):
+            p = [femmesh.getNodeById(n) for n in femmesh.getElementNodes(element)]
+            area += 0.5 * abs((p[2] - p[0]).cross(p[3] - p[1]).z)
+        self.assertAlmostEqual(area, sum(shape.Faces[i].Area for i in loaded), delta=0.01 * area)
+
+        pressure = 0.01
+        path = os.path.join(self.work_dir, "grouped.inp")
+        commands.export_with_groups(mesh, path)
+        with open(path, "a") as deck:
+            deck.write(f"""
+*MATERIAL, NAME=Steel
+*ELASTIC
+{YOUNG}, 0.3
+*SHELL SECTION, ELSET=Eall, MATERIAL=Steel
+{THICKNESS}
+*BOUNDARY
+Held, 1, 6
+*STEP
+*STATIC
+*DLOAD
+Loaded, P, {pressure}
+*NODE PRINT, NSET=Held, TOTALS=ONLY
+RF
+*END STEP
+""")
+        run = subprocess.run(["ccx", "grouped"], cwd=self.work_dir, capture_output=True, text=True,
+                             timeout=300, env=dict(os.environ, OMP_NUM_THREADS="1"))
+        self.assertEqual(run.returncode, 0, run.stdout[-2000:])
+        with open(os.path.join(self.work_dir, "grouped.dat")) as dat:
+            lines = [line for line in dat.read().splitlines() if line.strip()]
+        at = next(i for i, line in enumerate(lines) if "total force" in line and "HELD" in line.upper())
+        reaction = [float(v) for v in lines[at + 1].split()]
+        self.assertAlmostEqual(abs(reaction[2]), pressure * area, delta=1e-6 * pressure * area)
+        self.assertLess(math.hypot(reaction[0], reaction[1]), 1e-6 * pressure * area)
+
     def _kt(self, result):
         """The peak von Mises stress on the hole edge over the nominal net stress."""
         nodes = result.Mesh.FemMesh.Nodes

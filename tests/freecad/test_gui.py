@@ -307,6 +307,74 @@ class WorkbenchGuiTest(unittest.TestCase):
         self.assertGreater(mesh.FemMesh.FaceCount, LARGE_MESH_QUADS)
         self.assertEqual(mesh.ViewObject.DisplayMode, "Faces", "large: faces only")
 
+    def test_mesh_region_and_group_commands_act_on_a_templatequad_mesh(self):
+        """With a TemplateQuad mesh selected, the workbench's Mesh region and Mesh group
+        make FreeCAD's own objects on it (FEM's commands are for Gmsh meshes only),
+        open their task panels, and the tree shows them under the mesh."""
+        from freecad.templatequad import commands, make_mesh
+        part = self._filleted_box()
+        mesh = make_mesh(self.doc, part, size=4.0)
+        made = []
+        for command, kind in ((commands.REGION_COMMAND, "Fem::MeshRegion"),
+                              (commands.GROUP_COMMAND, "Fem::MeshGroup")):
+            FreeCADGui.Selection.clearSelection()
+            FreeCADGui.Selection.addSelection(self.doc.Name, mesh.Name)
+            FreeCADGui.runCommand(command)
+            _process_events()
+            gui_doc = FreeCADGui.getDocument(self.doc.Name)
+            edited = gui_doc.getInEdit()
+            self.assertIsNotNone(edited, f"{command}: a task panel is open")
+            made.append(edited.Object)
+            self.assertEqual(edited.Object.Proxy.Type, kind)
+            gui_doc.resetEdit()
+            FreeCADGui.Control.closeDialog()
+        self.assertEqual(list(mesh.MeshRegionList), made[:1])
+        self.assertEqual(list(mesh.MeshGroupList), made[1:])
+        self.assertEqual(mesh.ViewObject.Proxy.claimChildren(), made, "under the mesh in the tree")
+        FreeCADGui.Selection.clearSelection()
+        self.assertFalse(commands.AddToMeshCommand("MeshGroup", "", "", "").IsActive(),
+                         "nothing selected: inactive")
+
+    def test_show_worst_highlights_zooms_and_names_the_faces(self):
+        from freecad.templatequad import make_mesh, worst_elements
+        from freecad.templatequad.commands import WORST_COMMAND
+        from freecad.templatequad.task_panel import TemplateQuadTaskPanel
+        part = self._filleted_box()
+        mesh = make_mesh(self.doc, part, size=4.0)
+        camera = mesh.ViewObject.Document.ActiveView.getCamera()
+        printed = []
+        print_message = FreeCAD.Console.PrintMessage
+        FreeCAD.Console.PrintMessage = lambda text: printed.append(str(text))
+        try:
+            FreeCADGui.Selection.clearSelection()
+            FreeCADGui.Selection.addSelection(self.doc.Name, mesh.Name)
+            FreeCADGui.runCommand(WORST_COMMAND)
+            _process_events()
+        finally:
+            FreeCAD.Console.PrintMessage = print_message
+        worst = worst_elements.worst_elements(list(mesh.ElementQuality), worst_elements.DEFAULT_COUNT)
+        fem = mesh.FemMesh
+        nodes = sorted({n for e, _ in worst for n in fem.getElementNodes(e)})
+        self.assertEqual(sorted(mesh.ViewObject.HighlightedNodes), nodes)
+        self.assertNotEqual(mesh.ViewObject.Document.ActiveView.getCamera(), camera, "zoomed")
+        lines = [t for t in printed if "worst element" in t]
+        self.assertEqual(len(lines), 1, printed)
+        self.assertIn(f"element {worst[0][0]} on Face", lines[0])
+        self.assertIn(f"scaled Jacobian {worst[0][1]:.3f}", lines[0])
+        # The panel warns when the worst is under WarnBelowQuality (default 0.1).
+        preferences = FreeCAD.ParamGet(worst_elements.PREFERENCES)
+        panel = TemplateQuadTaskPanel(mesh)
+        self.assertNotIn("unreliable", panel.summary.text(), "this mesh is fine at 0.1")
+        preferences.SetFloat("WarnBelowQuality", 1.0)
+        try:
+            panel = TemplateQuadTaskPanel(mesh)
+            self.assertIn(f"has a scaled Jacobian of {worst[0][1]:.3f}, under 1", panel.summary.text())
+        finally:
+            preferences.RemFloat("WarnBelowQuality")
+        mesh.CharacteristicLengthMax = 5.0
+        mesh.Proxy.request_mesh(mesh)
+        self.assertEqual(list(mesh.ViewObject.HighlightedNodes), [], "a new mesh clears the highlights")
+
     def test_a_real_part_meshed_with_the_defaults(self):
         """A part from another CAD system, one click with the default settings: every
         face meshed, the part hidden, the panel readable at its default width; and the

@@ -7,6 +7,7 @@ would. The reference for counts is the tquad module itself on the same BREP text
 import ast
 import math
 import os
+import shutil
 import sys
 import tempfile
 import unittest
@@ -99,6 +100,34 @@ class QualityColoursTest(unittest.TestCase):
         self.assertEqual(qc.histogram_band_colour(0), qc.INVERTED, "band 0: below 0")
         for got, want in zip(qc.histogram_band_colour(10), qc.quality_colour(0.95)):
             self.assertAlmostEqual(got, want, 12, msg="band 10: [0.9, 1], at 0.95")
+
+
+class WorstElementsTest(unittest.TestCase):
+    """Which elements are the worst, on which face, and when the panel warns."""
+
+    def test_worst_first_ties_by_id_and_their_faces(self):
+        import random
+        from freecad.templatequad import worst_elements as we
+        rng = random.Random(7)
+        for _ in range(200):
+            values = [round(rng.random(), 2) for _ in range(rng.randint(1, 60))]
+            count = rng.randint(1, 70)
+            want = sorted(((v, j + 1) for j, v in enumerate(values)))[:count]
+            self.assertEqual(we.worst_elements(values, count), [(j, v) for v, j in want])
+            # Faces in any order, each a run of elements: every element finds its own.
+            sizes = [rng.randint(1, 9) for _ in range(rng.randint(1, 8))]
+            faces = rng.sample(range(100), len(sizes))
+            owners, first, truth = [], 0, {}
+            for face, n in zip(faces, sizes):
+                owners += [face, first, n]
+                truth.update({first + k + 1: face for k in range(n)})
+                first += n
+            for element in range(1, first + 2):
+                self.assertEqual(we.owner_of(element, owners), truth.get(element, -1))
+        self.assertEqual(we.worst_lines([(5, 0.0412)], [3, 0, 10], "Face"),
+                         ["element 5 on Face4: scaled Jacobian 0.041"])
+        self.assertEqual(we.quality_warning(0.5, "Face4", 0.1), "")
+        self.assertIn("Face4 has a scaled Jacobian of 0.041, under 0.1", we.quality_warning(0.0412, "Face4", 0.1))
 
 
 class MeshObjectTest(unittest.TestCase):
@@ -583,6 +612,113 @@ class MeshObjectTest(unittest.TestCase):
         uniform = make_mesh(self.doc, part, size=0.5)
         self.assertGreater(fem.FaceCount, 2 * coarse, "the hole is finer")
         self.assertLess(5 * fem.FaceCount, uniform.FemMesh.FaceCount, "far under a uniform fine mesh")
+
+    def test_element_owners_name_each_quads_face(self):
+        from freecad.templatequad import make_mesh, worst_elements as we
+        shape = self._filleted_box()
+        part = self._part(shape, "Filleted")
+        mesh = make_mesh(self.doc, part, size=4.0)
+        reference = _tquad().mesh_shape(shape.exportBrepToString(), size=4.0)
+        owners = list(mesh.ElementOwners)
+        self.assertEqual(len(owners), 3 * len(shape.Faces))
+        for record in reference.faces:
+            for element in (record["first_quad"] + 1, record["first_quad"] + record["quad_count"]):
+                self.assertEqual(we.owner_of(element, owners), record["face"])
+        worst = we.worst_elements(list(mesh.ElementQuality), 3)
+        self.assertAlmostEqual(worst[0][1], mesh.ScaledJacobianMin, places=9)
+
+    def _groups(self, mesh):
+        fem = mesh.FemMesh
+        return {(fem.getGroupName(g), fem.getGroupElementType(g)): set(fem.getGroupElements(g))
+                for g in fem.Groups}
+
+    def test_mesh_groups_become_element_and_node_sets(self):
+        # FEM's own Mesh group (ObjectsFem.makeMeshGroup) on a TemplateQuad mesh: a
+        # group of faces is exactly their quads (and, with GroupsOfNodes, their nodes),
+        # a group of edges and vertices the nodes on them; they survive save and reopen
+        # and the export writes them as *ELSET and *NSET.
+        import ObjectsFem
+        from freecad.templatequad import commands, make_mesh
+        plate = Part.makeBox(100, 60, 5).cut(
+            Part.makeCylinder(8, 7, FreeCAD.Vector(50, 30, -1), FreeCAD.Vector(0, 0, 1)))
+        part = self._part(plate, "HoledPlate")
+        mesh = make_mesh(self.doc, part, size=5.0)
+        hole = next(i for i, f in enumerate(plate.Faces) if f.Surface.TypeId == "Part::GeomCylinder")
+        top = next(i for i, f in enumerate(plate.Faces) if f.BoundBox.ZMin > 5 - 1e-9)
+        faces = ObjectsFem.makeMeshGroup(self.doc, mesh, True, "Faces")
+        faces.Label = "HoleAndTop"
+        faces.References = [(part, (f"Face{hole + 1}", f"Face{top + 1}"))]
+        rim = next(i for i, e in enumerate(plate.Edges) if e.Curve.TypeId == "Part::GeomCircle")
+        edges = ObjectsFem.makeMeshGroup(self.doc, mesh, False, "RimAndCorner")
+        edges.References = [(part, (f"Edge{rim + 1}", "Vertex1"))]
+        mesh.GroupsOfNodes = True
+        mesh.Proxy.request_mesh(mesh)
+        self.assertEqual(mesh.Proxy.last_error, "")
+        reference = _tquad().mesh_shape(plate.exportBrepToString(), size=5.0)
+        quads = set()
+        for f in (hole, top):
+            record = next(r for r in reference.faces if r["face"] == f)
+            quads.update(range(record["first_quad"] + 1, record["first_quad"] + record["quad_count"] + 1))
+        fem = mesh.FemMesh
+        on_faces = set(fem.getNodesByFace(plate.Faces[hole])) | set(fem.getNodesByFace(plate.Faces[top]))
+        on_rim = set(fem.getNodesByEdge(plate.Edges[rim])) | set(fem.getNodesByVertex(plate.Vertexes[0]))
+        want = {("HoleAndTop", "Face"): quads, ("HoleAndTop", "Node"): on_faces,
+                ("RimAndCorner", "Node"): on_rim}
+        self.assertEqual(self._groups(mesh), want)
+        self.assertGreater(len(quads), 20)
+        self.assertGreater(len(on_rim), 10)
+
+        folder = tempfile.mkdtemp(prefix="tq_groups_")
+        try:
+            written = os.path.join(folder, "plate.inp")
+            commands.export_with_groups(mesh, written)
+            text = open(written).read()
+            for name, kind in (("HoleAndTop", "ELSET"), ("HoleAndTop", "NSET"), ("RimAndCorner", "NSET")):
+                block = text.split(f"*{kind}, {kind}={name}\n")[1].split("\n\n")[0]
+                ids = {int(n) for n in block.replace(",", " ").split()}
+                self.assertEqual(ids, want[(name, "Face" if kind == "ELSET" else "Node")], (name, kind))
+            self.assertEqual(os.listdir(folder), ["plate.inp"], "no temporary file left")
+            saved = os.path.join(folder, "groups.FCStd")
+            name = mesh.Name
+            self.doc.saveAs(saved)
+            FreeCAD.closeDocument(self.doc.Name)
+            self.doc = FreeCAD.openDocument(saved)
+            self.assertEqual(self._groups(self.doc.getObject(name)), want, "groups after reopening")
+        finally:
+            shutil.rmtree(folder, ignore_errors=True)
+
+    def test_mesh_groups_of_a_swept_solid_and_wrong_groups(self):
+        import ObjectsFem
+        from freecad.templatequad import make_mesh
+        part = self._part(Part.makeBox(20, 10, 5), "Block")
+        mesh = make_mesh(self.doc, part, size=2.5, element_dimension="3D")
+        solid = ObjectsFem.makeMeshGroup(self.doc, mesh, True, "All")
+        solid.References = [(part, ("Solid1", "Face1"))]
+        mesh.Proxy.request_mesh(mesh)
+        self.assertEqual(mesh.Proxy.last_error, "")
+        groups = self._groups(mesh)
+        self.assertEqual(groups[("All", "Volume")], set(range(1, mesh.FemMesh.VolumeCount + 1)))
+        self.assertEqual(groups[("All", "Node")], set(mesh.FemMesh.getNodesByFace(part.Shape.Faces[0])))
+
+        mesh.ElementDimension = "2D"
+        for references, needle in ((("Solid1",), "Solid1 has no elements in a 2D mesh"),
+                                   (("Face9",), "Face9 does not exist; the part has Face1..Face6"),
+                                   ((), "references nothing")):
+            solid.References = [(part, references)] if references else []
+            mesh.Proxy.request_mesh(mesh)
+            self.assertIn(needle, mesh.Proxy.last_error)
+            self.assertNotIn("\n", mesh.Proxy.last_error)
+            self.assertEqual(mesh.FemMesh.NodeCount, 0, "no mesh kept on a wrong group")
+        # FreeCAD keeps labels unique, unless its DuplicateLabels preference is on.
+        from freecad.templatequad import meshing
+
+        class Group:
+            UseLabel, References = True, [(part, ("Face1",))]
+
+            def __init__(self, label):
+                self.Label = self.Name = label
+        with self.assertRaisesRegex(ValueError, "another mesh group is named 'Twin' too"):
+            meshing.mesh_groups([Group("Twin"), Group("Twin")])
 
     def test_a_size_larger_than_the_part_says_so(self):
         from freecad.templatequad import make_mesh

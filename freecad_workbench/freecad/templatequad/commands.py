@@ -7,6 +7,17 @@ selection, the transaction, the analysis and the panel.
 
 TemplateQuad_Remesh: mesh the selected TemplateQuad mesh objects again (a recompute
 only marks them OutOfDate when their part or settings change).
+
+TemplateQuad_MeshRegion, TemplateQuad_MeshGroup: FreeCAD's own FEM mesh region and
+mesh group (ObjectsFem.makeMeshRegion, makeMeshGroup, with FreeCAD's task panels) on
+the selected TemplateQuad mesh; FEM's commands of the same names are only active on
+a Gmsh mesh.
+
+TemplateQuad_ShowWorst: highlight the selected mesh's worst elements, zoom onto them
+and list them with their faces in the report view.
+
+TemplateQuad_ExportGroups: write the selected mesh with its mesh groups as *ELSET and
+*NSET to an .inp file (FreeCAD's File > Export leaves groups out).
 """
 import FreeCAD
 import FreeCADGui
@@ -15,9 +26,13 @@ from . import paths
 
 MESH_COMMAND = "TemplateQuad_Mesh"
 REMESH_COMMAND = "TemplateQuad_Remesh"
+REGION_COMMAND = "TemplateQuad_MeshRegion"
+GROUP_COMMAND = "TemplateQuad_MeshGroup"
+EXPORT_COMMAND = "TemplateQuad_ExportGroups"
+WORST_COMMAND = "TemplateQuad_ShowWorst"
 
 #: Commands of the workbench's toolbar and menu, in order.
-COMMANDS = [MESH_COMMAND, REMESH_COMMAND]
+COMMANDS = [MESH_COMMAND, REMESH_COMMAND, WORST_COMMAND, REGION_COMMAND, GROUP_COMMAND, EXPORT_COMMAND]
 
 
 def _has_faces(obj) -> bool:
@@ -144,6 +159,122 @@ class RemeshCommand:
                 return
 
 
+class AddToMeshCommand:
+    """A FEM mesh region or mesh group on the one selected TemplateQuad mesh."""
+
+    def __init__(self, kind: str, menu: str, tip: str, icon: str):
+        self.kind, self.menu, self.tip, self.icon = kind, menu, tip, icon
+
+    def GetResources(self):
+        try:
+            import FemGui  # noqa: F401  (registers FEM's icons, these among them)
+        except ImportError:
+            pass
+        return {"Pixmap": self.icon, "MenuText": self.menu, "ToolTip": self.tip}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None and len(selected_meshes()) == 1
+
+    def Activated(self):
+        mesh = selected_meshes()[0]
+        doc = mesh.Document
+        doc.openTransaction(self.menu)
+        import ObjectsFem
+        made = getattr(ObjectsFem, "make" + self.kind)(doc, mesh)
+        doc.commitTransaction()
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.getDocument(doc).setEdit(made.Name)
+
+
+def show_worst_elements(mesh) -> list:
+    """Highlight and zoom onto mesh's worst elements (the WorstElements preference), and
+    list them in the report view; returns their lines."""
+    from . import worst_elements as worst_module
+    from .view_provider import show_worst
+
+    count, _ = worst_module.preferences()
+    worst = show_worst(mesh.ViewObject, count)
+    if not worst:
+        FreeCAD.Console.PrintWarning(f"TemplateQuad: {mesh.Label}: no element qualities; mesh it again\n")
+        return []
+    kind = "Solid" if mesh.FemMesh.VolumeCount else "Face"
+    lines = worst_module.worst_lines(worst, list(mesh.ElementOwners), kind)
+    FreeCAD.Console.PrintMessage(f"TemplateQuad: {mesh.Label}: the {len(lines)} worst element(s), highlighted: "
+                                 + "; ".join(lines) + "\n")
+    return lines
+
+
+class ShowWorstCommand:
+    """The selected mesh's worst elements, highlighted and zoomed to."""
+
+    def GetResources(self):
+        return {"Pixmap": paths.icon("TemplateQuad_Mesh"),
+                "MenuText": "Show worst elements",
+                "ToolTip": ("Highlight the worst elements (lowest scaled Jacobian) of the selected "
+                            "TemplateQuad mesh, zoom onto them and list them with their faces")}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None and len(selected_meshes()) == 1
+
+    def Activated(self):
+        show_worst_elements(selected_meshes()[0])
+
+
+def export_with_groups(mesh, path: str) -> None:
+    """export_with_groups(): mesh's FemMesh with its groups as an Abaqus/CalculiX .inp
+    (FemMesh.writeABAQUS: the highest-order elements, groups as *ELSET and *NSET),
+    written beside `path` and renamed onto it, so a failure leaves no partial file.
+
+    Raises:
+        ValueError: the mesh is empty (not meshed yet, or its meshing failed).
+    """
+    import os
+    import tempfile
+
+    femmesh = mesh.FemMesh
+    if femmesh.NodeCount == 0:
+        raise ValueError(f"{mesh.Label} has no mesh to export; mesh it first")
+    folder = os.path.dirname(os.path.abspath(path))
+    handle, temporary = tempfile.mkstemp(prefix=".templatequad-", suffix=".inp", dir=folder)
+    os.close(handle)
+    try:
+        femmesh.writeABAQUS(temporary, 1, True)
+        os.replace(temporary, path)
+    except BaseException:
+        os.unlink(temporary)
+        raise
+
+
+class ExportGroupsCommand:
+    """The selected mesh and its groups to an .inp file."""
+
+    def GetResources(self):
+        return {"Pixmap": paths.icon("TemplateQuad_Mesh"),
+                "MenuText": "Export mesh with groups (.inp)",
+                "ToolTip": ("Write the selected TemplateQuad mesh to an Abaqus/CalculiX .inp file "
+                            "with its mesh groups as element and node sets")}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None and len(selected_meshes()) == 1
+
+    def Activated(self):
+        from PySide import QtGui
+
+        mesh = selected_meshes()[0]
+        path, _ = QtGui.QFileDialog.getSaveFileName(
+            FreeCADGui.getMainWindow(), "Export mesh with groups", mesh.Label + ".inp",
+            "Abaqus/CalculiX input (*.inp)")
+        if not path:
+            return
+        try:
+            export_with_groups(mesh, path)
+        except (ValueError, OSError) as error:
+            FreeCAD.Console.PrintError(f"TemplateQuad: {mesh.Label}: {error}\n")
+            return
+        FreeCAD.Console.PrintMessage(f"TemplateQuad: {mesh.Label} written to {path} with "
+                                     f"{mesh.FemMesh.GroupCount} group(s)\n")
+
+
 def show_mesh_over_part(mesh, part) -> None:
     """Hide the part where the mesh covers it whole; else show which faces are missing.
 
@@ -163,3 +294,12 @@ def register():
     """Add the commands to FreeCADGui (the workbench calls this in Initialize())."""
     FreeCADGui.addCommand(MESH_COMMAND, MeshCommand())
     FreeCADGui.addCommand(REMESH_COMMAND, RemeshCommand())
+    FreeCADGui.addCommand(REGION_COMMAND, AddToMeshCommand(
+        "MeshRegion", "Mesh region", "A FEM mesh region on the selected TemplateQuad mesh: its element "
+        "size on the faces, edges and vertices it references", "FEM_MeshRegion"))
+    FreeCADGui.addCommand(GROUP_COMMAND, AddToMeshCommand(
+        "MeshGroup", "Mesh group", "A FEM mesh group on the selected TemplateQuad mesh: the elements "
+        "and nodes of the faces, edges and vertices it references, as a named set",
+        "FEM_MeshGroup"))
+    FreeCADGui.addCommand(EXPORT_COMMAND, ExportGroupsCommand())
+    FreeCADGui.addCommand(WORST_COMMAND, ShowWorstCommand())

@@ -24,6 +24,8 @@ Gmsh mesh object, where they mean the same):
     Corners                  "FACE:V1,V2,..." entries overriding the automatic corners
     Sew                      join faces that touch without sharing their edge first
     MeshRegionList           FEM mesh regions: local sizes on faces, edges, vertices
+    MeshGroupList            FEM mesh groups: named element and node sets of the mesh
+    GroupsOfNodes            a group's faces (solids in 3D) give a node set too
     MeshSizeFromCurvature    the fewest element edges per full turn of a curved edge
     GrowthRate               the most neighbouring element edges differ in length
     KeepGoing                mesh the other faces when one is refused
@@ -93,6 +95,12 @@ _INPUTS = (
     ("App::PropertyLinkList", "MeshRegionList",
      "FEM mesh regions (FEM > Mesh region): each one's CharacteristicLength on the faces, "
      "edges and vertices of the part it references"),
+    ("App::PropertyLinkList", "MeshGroupList",
+     "FEM mesh groups (FEM > Mesh group): each one's faces (solids in 3D) become an element "
+     "group named after it, its edges and vertices a node group, written as *ELSET and *NSET "
+     "(TemplateQuad > Export mesh with groups)"),
+    ("App::PropertyBool", "GroupsOfNodes",
+     "Mesh groups of faces (solids in 3D) get a node group of their nodes too"),
     ("App::PropertyInteger", "MeshSizeFromCurvature",
      "The fewest element edges a curved edge gets per full turn of its curve (8 to 1000; "
      "8 is one per 45 degrees)"),
@@ -106,7 +114,7 @@ ELEMENT_DIMENSIONS = ["2D", "3D"]
 ELEMENT_ORDERS = ["1st", "2nd"]
 # Values of new properties, for new objects and for files saved before they existed
 # (so those files mesh as they did).
-_DEFAULTS = {"T4Ratio": 2, "Smooth": True, "BestCorners": False, "Sew": False, "Layers": 0, "GrowthRate": 1.3,
+_DEFAULTS = {"GroupsOfNodes": False, "T4Ratio": 2, "Smooth": True, "BestCorners": False, "Sew": False, "Layers": 0, "GrowthRate": 1.3,
              "MeshSizeFromCurvature": 8}
 ELEMENT_QUALITY = "ElementQuality"
 _OUTPUTS = (
@@ -129,9 +137,17 @@ _OUTPUTS = (
     ("App::PropertyStringList", "TemplateTrees", "Template tree of each meshed face"),
     ("App::PropertyFloatList", ELEMENT_QUALITY,
      "Scaled Jacobian of each quad, in element order: the quality colour map's values"),
+    ("App::PropertyIntegerList", "ElementOwners",
+     "(face, first element, count) per meshed face, or per swept solid in 3D, flat and 0-based"),
 )
 #: A million values are no list to show in the property editor: saved, not shown.
-_HIDDEN_OUTPUTS = (ELEMENT_QUALITY,)
+_HIDDEN_OUTPUTS = (ELEMENT_QUALITY, "ElementOwners")
+
+
+def _owners(records, owner: str, first: str, count: str):
+    """ElementOwners from tquad's face or solid records, in element order."""
+    rows = sorted((r[first], r[owner], r[count]) for r in records)
+    return [int(v) for start, index, n in rows for v in (index, start, n)]
 
 
 def _face_names_problem(obj):
@@ -229,6 +245,8 @@ FREECAD_ONLY_PROPERTIES = {
     "Layers": "tquad.sweep_shape's layers",
     "KeepGoing": "whether refused faces fail the recompute or leave an Incomplete mesh",
     "AcceptIncomplete": "whether a solver may run on an Incomplete mesh",
+    "MeshGroupList": "named sets of the finished mesh's elements and nodes (FemMesh groups)",
+    "GroupsOfNodes": "whether a mesh group's faces or solids give a node set too",
 }
 
 #: The keywords of tquad.mesh_shape the object does not offer as properties, and why.
@@ -360,6 +378,7 @@ class TemplateQuadMesh(StatelessProxy):
             self._sweep(obj)
             return
         try:
+            groups = meshing.mesh_groups(obj.MeshGroupList)
             mesh = self._mesh(obj)
             if mesh is None:  # the user cancelled: the mesh and its inputs stay as they were
                 self.cancelled = True
@@ -367,11 +386,14 @@ class TemplateQuadMesh(StatelessProxy):
                 return
             if mesh.refused_faces and not obj.KeepGoing:
                 raise ValueError(meshing.refusal_error(mesh))
+            femmesh = meshing.to_femmesh(mesh)
+            group_warnings = meshing.add_face_mesh_groups(femmesh, mesh, obj.Part.Shape, groups,
+                                                          obj.GroupsOfNodes)
         except (meshing.TquadMissing, ValueError) as error:
             self._fail(obj, error)
             return
 
-        obj.FemMesh = meshing.to_femmesh(mesh)
+        obj.FemMesh = femmesh
         obj.TemplateTrees = meshing.template_tree_lines(mesh)
         obj.RefusedFaces = meshing.refused_face_lines(mesh)
         obj.RefusedFaceNames = meshing.refused_face_names(mesh)
@@ -384,6 +406,7 @@ class TemplateQuadMesh(StatelessProxy):
         obj.QualityHistogram = [int(n) for n in mesh.quality["jacobian_histogram"]]
         obj.ElementSizeUsed = float(mesh.edge_size or 0.0)
         obj.ElementQuality = mesh.scaled_jacobian.tolist()  # a numpy array
+        obj.ElementOwners = _owners(mesh.faces, "face", "first_quad", "quad_count")
         self._remember_meshed_inputs(obj)
         for line in obj.RefusedFaces:
             FreeCAD.Console.PrintWarning(
@@ -402,6 +425,8 @@ class TemplateQuadMesh(StatelessProxy):
         absorbed = meshing.absorbed_message(mesh)
         if absorbed:
             FreeCAD.Console.PrintMessage(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {absorbed}\n")
+        for line in group_warnings:
+            FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {line}\n")
 
     def _sweep(self, obj):
         """ElementDimension 3D: the part's solids swept into hexahedra -> obj.FemMesh.
@@ -410,6 +435,7 @@ class TemplateQuadMesh(StatelessProxy):
         the mesh Incomplete; without KeepGoing they fail the recompute. Errors as
         execute's."""
         try:
+            groups = meshing.mesh_groups(obj.MeshGroupList)
             shape = self._source_shape(obj)
             swept = meshing.sweep_shape(shape, size=obj.CharacteristicLengthMax.Value,
                                         min_size=obj.CharacteristicLengthMin.Value, layers=obj.Layers,
@@ -418,10 +444,14 @@ class TemplateQuadMesh(StatelessProxy):
                 raise ValueError("%d solid(s) not swept: %s. Turn on 'Mesh the other faces' (KeepGoing) "
                                  "to sweep the rest." % (len(swept.refused_solids),
                                                          "; ".join(meshing.refused_solid_lines(swept))))
+            femmesh = meshing.to_femmesh_volumes(swept)
+            group_warnings = meshing.add_solid_mesh_groups(femmesh, swept, shape, groups, obj.GroupsOfNodes)
         except (meshing.TquadMissing, ValueError) as error:
             self._fail(obj, error)
             return
-        obj.FemMesh = meshing.to_femmesh_volumes(swept)
+        obj.FemMesh = femmesh
+        for line in group_warnings:
+            FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {line}\n")
         obj.TemplateTrees = [meshing.swept_solid_line(s) for s in swept.solids]
         for face in getattr(swept, "unshared_faces", []):
             FreeCAD.Console.PrintWarning(
@@ -441,6 +471,7 @@ class TemplateQuadMesh(StatelessProxy):
         obj.QualityHistogram = [int((sj < 0).sum())] + [int(n) for n in bands]
         obj.ElementSizeUsed = float(swept.edge_size)
         obj.ElementQuality = sj.tolist()
+        obj.ElementOwners = _owners(swept.solids, "solid", "first_hex", "hex_count")
         self._remember_meshed_inputs(obj)
         for line in obj.RefusedFaces:
             FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {obj.Part.Label} {line} (not swept)\n")
@@ -523,5 +554,6 @@ class TemplateQuadMesh(StatelessProxy):
         obj.Quality = ""
         obj.QualityHistogram = []
         obj.ElementQuality = []
+        obj.ElementOwners = []
         obj.ScaledJacobianMin = obj.ScaledJacobianMean = 0.0
         obj.ElementSizeUsed = 0.0

@@ -356,6 +356,108 @@ def region_sizes(regions):
     return sizes or None
 
 
+_GROUP_ELEMENT = re.compile(r"^(Solid|Face|Edge|Vertex)(\d+)$")
+
+
+def mesh_groups(groups):
+    """mesh_groups(): FEM mesh groups (``Fem::MeshGroup``, ObjectsFem.makeMeshGroup) as
+    (name, {"Solid"|"Face"|"Edge"|"Vertex": [0-based indices]}) pairs, in their order.
+    The name is the group's Label with UseLabel on, else its Name (as FreeCAD's Gmsh
+    mesh names them). The References name the meshed part's elements, as for regions.
+
+    Raises:
+        ValueError: a group without references, a reference that is not a solid, face,
+            edge or vertex, or two groups of one name.
+    """
+    named = []
+    for group in groups or []:
+        name = group.Label if getattr(group, "UseLabel", False) else group.Name
+        if any(name == other for other, _ in named):
+            raise ValueError(f"{group.Label}: another mesh group is named {name!r} too; "
+                             "a name is one set in the written mesh")
+        kinds = {}
+        for _, names in group.References:
+            for element in names:
+                match = _GROUP_ELEMENT.match(element)
+                if not match:
+                    raise ValueError(f"{group.Label}: {element} is not a solid, face, edge or vertex")
+                kinds.setdefault(match.group(1), []).append(int(match.group(2)) - 1)
+        if not kinds:
+            raise ValueError(f"{group.Label}: the mesh group references nothing; "
+                             "add faces, edges or vertices of the part to it")
+        named.append((name, {kind: sorted(set(ids)) for kind, ids in kinds.items()}))
+    return named
+
+
+def add_mesh_groups(femmesh, shape, groups, nodes_too: bool, owner: str, ranges, elements) -> List[str]:
+    """add_mesh_groups(): the mesh groups (mesh_groups) added to a FemMesh whose
+    element j + 1 is row j of `elements` (0-based nodes; node i is FemMesh node i + 1).
+
+    `owner` is the shape element that owns elements: "Face" for quads (to_femmesh),
+    "Solid" for hexahedra (to_femmesh_volumes); `ranges` maps an owner's 0-based index
+    to (first element, count). A group's owners become an element group ("Face" or
+    "Volume") and, with nodes_too (FreeCAD's GroupsOfNodes), a "Node" group of their
+    nodes; its other references (edges, vertices; faces of a 3D mesh) become a "Node"
+    group of the nodes on them, found on the CAD shapes as FreeCAD's constraints find
+    theirs. FemMesh.writeABAQUS(path, 1, True) writes them as *ELSET and *NSET.
+    Returns one warning per owner the mesh lacks (a refused face or solid).
+
+    Raises:
+        ValueError: a group naming a solid of a 2D mesh (it has no volume elements) or
+            an element the part does not have.
+    """
+    import numpy
+
+    shapes = {"Solid": shape.Solids, "Face": shape.Faces, "Edge": shape.Edges, "Vertex": shape.Vertexes}
+    by_nodes = {"Face": "getNodesByFace", "Edge": "getNodesByEdge", "Vertex": "getNodesByVertex"}
+    warnings = []
+    for name, kinds in groups:
+        if "Solid" in kinds and owner != "Solid":
+            raise ValueError(f"mesh group {name}: Solid{kinds['Solid'][0] + 1} has no elements in a "
+                             "2D mesh; group its faces, or mesh with ElementDimension 3D")
+        for kind, ids in kinds.items():
+            if ids[-1] >= len(shapes[kind]):
+                raise ValueError(f"mesh group {name}: {kind}{ids[-1] + 1} does not exist; the part "
+                                 f"has {kind}1..{kind}{len(shapes[kind])}")
+        owned = []
+        for index in kinds.get(owner, []):
+            if index not in ranges:
+                warnings.append(f"mesh group {name}: {owner}{index + 1} is not meshed, so not in the group")
+                continue
+            first, count = ranges[index]
+            owned.append(numpy.arange(first, first + count))
+        owned = numpy.concatenate(owned) if owned else numpy.zeros(0, dtype=int)
+        if len(owned):
+            group = femmesh.addGroup(name, "Face" if owner == "Face" else "Volume")
+            femmesh.addGroupElements(group, (owned + 1).tolist())
+        nodes = set()
+        if nodes_too and len(owned):
+            nodes.update((numpy.unique(elements[owned]) + 1).tolist())
+        for kind, ids in kinds.items():
+            if kind != owner:
+                find = getattr(femmesh, by_nodes[kind])
+                for index in ids:
+                    nodes.update(find(shapes[kind][index]))
+        if nodes:
+            group = femmesh.addGroup(name, "Node")
+            femmesh.addGroupElements(group, sorted(nodes))
+    return warnings
+
+
+def add_face_mesh_groups(femmesh, mesh, shape, groups, nodes_too: bool) -> List[str]:
+    """add_face_mesh_groups(): add_mesh_groups for a quad mesh (to_femmesh)."""
+    ranges = {f["face"]: (f["first_quad"], f["quad_count"]) for f in mesh.faces}
+    return add_mesh_groups(femmesh, shape, groups, nodes_too, "Face", ranges, element_nodes(mesh))
+
+
+def add_solid_mesh_groups(femmesh, swept, shape, groups, nodes_too: bool) -> List[str]:
+    """add_solid_mesh_groups(): add_mesh_groups for swept hexahedra (to_femmesh_volumes)."""
+    import numpy
+
+    ranges = {s["solid"]: (s["first_hex"], s["hex_count"]) for s in swept.solids}
+    return add_mesh_groups(femmesh, shape, groups, nodes_too, "Solid", ranges, numpy.asarray(swept.hexes))
+
+
 #: Peak memory per quad while faces of millions of quads are meshed (as measured on
 #: such runs): what the estimate before a large run shows.
 PEAK_BYTES_PER_QUAD = 700

@@ -229,6 +229,9 @@ class TemplateQuadTaskPanel:
             self.summary.setText(f"{o.FemMesh.QuadrangleCount} quads{faces}, element size "
                                  f"{used:.3g} mm; scaled Jacobian worst "
                                  f"{o.ScaledJacobianMin:.2f}, mean {o.ScaledJacobianMean:.2f}")
+        warning = self._quality_warning() if not error and o.FemMesh.NodeCount else ""
+        if warning:
+            self.summary.setText(f"{self.summary.text()}<br><span style='color:#b60'>{warning}</span>")
         unsewn = meshing.unsewn_warning(o.UnsewnEdges, o.Sew) if not error else ""
         if unsewn:
             self.summary.setText(f"{self.summary.text()}<br><span style='color:#b60'>"
@@ -245,6 +248,23 @@ class TemplateQuadTaskPanel:
         if o.Quality:
             details.insert(0, o.Quality)
         self.details.setPlainText("\n".join(details))
+
+    def _quality_warning(self) -> str:
+        """The warning of a worst element under the WarnBelowQuality preference."""
+        from . import worst_elements as worst_module
+
+        o = self.obj
+        _, warn_below = worst_module.preferences()
+        worst = worst_module.worst_elements(list(o.ElementQuality), 1)
+        if not worst:
+            return ""
+        owner = worst_module.owner_of(worst[0][0], list(o.ElementOwners))
+        kind = "Solid" if o.FemMesh.VolumeCount else "Face"
+        return worst_module.quality_warning(worst[0][1], f"{kind}{owner + 1}" if owner >= 0 else "", warn_below)
+
+    def show_worst(self):
+        from .commands import show_worst_elements
+        show_worst_elements(self.obj)
 
     def _build_form(self):
         form = QtGui.QWidget()
@@ -276,6 +296,11 @@ class TemplateQuadTaskPanel:
                                         "1 (square), yellow 0.6, red 0.2 and below")
         self.quality_colours.toggled.connect(self.toggle_quality_colours)
         box.addWidget(self.quality_colours)
+        worst = QtGui.QPushButton("Show worst")
+        worst.setToolTip("Highlight the worst elements (lowest scaled Jacobian), zoom onto them "
+                         "and list them with their faces in the report view")
+        worst.clicked.connect(self.show_worst)
+        box.addWidget(worst)
         layout.addWidget(result)
 
         params = QtGui.QGroupBox("Mesh parameters")

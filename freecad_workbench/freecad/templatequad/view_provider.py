@@ -35,6 +35,8 @@ class ViewProviderTemplateQuadMesh(StatelessProxy):
         if prop != "FemMesh" or not hasattr(obj, "ViewObject") or obj.ViewObject is None:
             return
         vobj = obj.ViewObject
+        if list(vobj.HighlightedNodes):
+            vobj.HighlightedNodes = []  # the worst elements of the mesh before
         if obj.FemMesh.FaceCount > LARGE_MESH_QUADS and vobj.DisplayMode == DISPLAY_MODE:
             vobj.DisplayMode = FACES_MODE
         if showing_quality(vobj):
@@ -42,6 +44,12 @@ class ViewProviderTemplateQuadMesh(StatelessProxy):
 
     def getIcon(self):
         return paths.icon("TemplateQuad_Mesh")
+
+    def claimChildren(self):
+        """The mesh's FEM mesh regions and groups sit under it in the tree, as under
+        FreeCAD's Gmsh mesh."""
+        obj = self.Object
+        return list(getattr(obj, "MeshRegionList", [])) + list(getattr(obj, "MeshGroupList", []))
 
     def setEdit(self, vobj, mode=0):
         """Open the task panel for the default edit mode; leave other modes to FreeCAD."""
@@ -88,3 +96,54 @@ def show_quality(vobj, on: bool) -> bool:
         return not on
     vobj.ElementColor = element_colours(values)
     return True
+
+
+#: The colour of the worst elements when the quality map is off.
+WORST_COLOUR = (0.9, 0.0, 0.9)
+
+
+def show_worst(vobj, count: int):
+    """show_worst(): the `count` worst elements of the mesh (worst_elements) drawn: their
+    nodes highlighted, the elements coloured (unless the quality map already colours
+    them) and the view zoomed onto them; returns them as (element id, value), worst
+    first ([] when the mesh has no qualities)."""
+    from .worst_elements import worst_elements
+
+    obj = vobj.Object
+    values = list(obj.ElementQuality)
+    femmesh = obj.FemMesh
+    if not values or len(values) != (femmesh.VolumeCount or femmesh.FaceCount):
+        return []
+    worst = worst_elements(values, count)
+    nodes = sorted({n for element, _ in worst for n in femmesh.getElementNodes(element)})
+    vobj.HighlightedNodes = nodes
+    if not showing_quality(vobj):
+        vobj.ElementColor = {element: WORST_COLOUR for element, _ in worst}
+    vobj.Visibility = True
+    _zoom_to([femmesh.getNodeById(n) for n in nodes], obj.Document)
+    return worst
+
+
+def clear_worst(vobj) -> None:
+    """Undo show_worst's highlights (the quality map, when shown, stays)."""
+    vobj.HighlightedNodes = []
+    if not showing_quality(vobj):
+        vobj.ElementColor = {}
+
+
+def _zoom_to(points, doc) -> None:
+    """Zoom the document's 3D view onto points (with a margin of their own size)."""
+    from pivy import coin
+
+    view = FreeCADGui.getDocument(doc).ActiveView
+    if not points or not hasattr(view, "getCameraNode"):
+        return
+    box = FreeCAD.BoundBox()
+    for p in points:
+        box.add(p)
+    margin = max(box.DiagonalLength, 1e-6)
+    box.enlarge(margin)
+    camera = view.getCameraNode()
+    width, height = view.getSize()
+    camera.viewBoundingBox(coin.SbBox3f(box.XMin, box.YMin, box.ZMin, box.XMax, box.YMax, box.ZMax),
+                           width / max(height, 1), 1.0)
