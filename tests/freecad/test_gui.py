@@ -307,6 +307,103 @@ class WorkbenchGuiTest(unittest.TestCase):
         self.assertGreater(mesh.FemMesh.FaceCount, LARGE_MESH_QUADS)
         self.assertEqual(mesh.ViewObject.DisplayMode, "Faces", "large: faces only")
 
+    def test_the_hand_over_shows_its_steps_and_a_cancel_between_them_keeps_the_mesh(self):
+        """A large mesh's hand-over to FreeCAD (C++ calls that answer no event) shows a
+        dialog naming each step; Cancel pressed during a step is honoured before the
+        next: the previous mesh and its inputs stay."""
+        from freecad.templatequad import make_mesh, progress_dialog
+        part = self._filleted_box()
+        mesh = make_mesh(self.doc, part, size=20.0)
+        before = mesh.FemMesh.FaceCount
+        steps = []
+        step, limit = progress_dialog.HandOver.step, progress_dialog.HANDOVER_DIALOG_QUADS
+
+        def cancelling_step(hand, what):
+            if what.startswith("copying"):
+                hand.dialog.cancel()  # as if pressed while the mesh was read
+            going_on = step(hand, what)
+            steps.append((what, hand.dialog is not None and hand.dialog.isVisible()))
+            return going_on
+
+        progress_dialog.HANDOVER_DIALOG_QUADS = 0  # this small mesh gets the dialog too
+        progress_dialog.HandOver.step = cancelling_step
+        try:
+            mesh.CharacteristicLengthMax = 3.0
+            mesh.Proxy.request_mesh(mesh)
+        finally:
+            progress_dialog.HandOver.step, progress_dialog.HANDOVER_DIALOG_QUADS = step, limit
+        self.assertEqual([w for w, _ in steps], ["reading the mesh",
+                                                 "copying it into the object and building its view"])
+        self.assertTrue(all(shown for _, shown in steps), "the dialog is up at each step")
+        self.assertTrue(mesh.Proxy.cancelled)
+        self.assertEqual(mesh.CharacteristicLengthMax.Value, 20.0, "the size is put back")
+        self.assertEqual(mesh.FemMesh.FaceCount, before, "the previous mesh is kept")
+        dialogs = [w for w in QtGui.QApplication.topLevelWidgets()
+                   if isinstance(w, QtGui.QProgressDialog) and w.isVisible()]
+        self.assertEqual(dialogs, [], "the dialog is closed")
+
+    def _report_view(self):
+        """The Report view's text widget (FreeCAD's Gui::DockWnd::ReportOutput)."""
+        dock = FreeCADGui.getMainWindow().findChild(QtGui.QDockWidget, "Report view")
+        self.assertIsNotNone(dock, "the Report view")
+        dock.show()
+        text = dock.findChild(QtGui.QTextEdit)
+        self.assertIsNotNone(text)
+        return text
+
+    def test_bad_inputs_say_one_line_in_freecad_terms_without_traceback(self):
+        """The bad-input matrix as a user meets it, read off the Report view: each
+        message names FreeCAD's objects, once, and no traceback is printed."""
+        import ObjectsFem
+        from freecad.templatequad import make_mesh
+        report = self._report_view()
+        report.clear()
+        part = self._filleted_box()
+        mesh = make_mesh(self.doc, part, size=5.0)
+        faces = len(part.Shape.Faces)
+
+        def said(action):
+            start = len(report.toPlainText())
+            action()
+            _process_events()
+            return report.toPlainText()[start:]
+
+        # A corner override on a face the part does not have: at meshing, once.
+        text = said(lambda: (setattr(mesh, "Corners", ["Face999:Vertex1,Vertex2"]),
+                             mesh.Proxy.request_mesh(mesh)))
+        self.assertIn(f"Face999", text)
+        self.assertIn(f"Face1..Face{faces}", text)
+        self.assertNotIn("998", text, "no 0-based numbers")
+        self.assertEqual(text.strip().count("\n"), 0, text)
+        # Later recomputes print nothing more.
+        self.assertEqual(said(lambda: [self.doc.recompute() for _ in range(3)]).strip(), "")
+        mesh.Corners = []
+        # Values refused when set, with the reason, and put back.
+        for name, value, needle in (("T4Ratio", 0, "T4Ratio 0"), ("Faces", ["Face99"], "Faces: Face99 does not exist"),
+                                    ("Layers", -2, "Layers -2"), ("GrowthRate", 0.5, "GrowthRate 0.5")):
+            before = getattr(mesh, name)
+            text = said(lambda: setattr(mesh, name, value))
+            self.assertIn(f"{mesh.Label}: {needle}", text)
+            self.assertEqual(text.strip().count("\n"), 0, text)
+            self.assertEqual(getattr(mesh, name), before, f"{name} put back")
+        # A size larger than the part: a warning naming the part's size.
+        text = said(lambda: (setattr(mesh, "CharacteristicLengthMax", 1e6), mesh.Proxy.request_mesh(mesh)))
+        self.assertIn("larger than the part", text)
+        mesh.CharacteristicLengthMax = 5.0
+        # A mesh group that references nothing.
+        group = ObjectsFem.makeMeshGroup(self.doc, mesh, True, "EmptyGroup")
+        text = said(lambda: mesh.Proxy.request_mesh(mesh))
+        self.assertIn(f"{group.Label}: the mesh group references nothing", text)
+        self.assertEqual(text.strip().count("\n"), 0, text)
+        self.doc.removeObject(group.Name)
+        mesh.MeshGroupList = []
+        # An edge selected, no face: the whole part is meshed, and the user told so.
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(self.doc.Name, part.Name, "Edge1")
+        text = said(lambda: FreeCADGui.runCommand(COMMAND))
+        self.assertIn(f"Edge1 of {part.Label} selected: not faces, so the whole of {part.Label} is meshed", text)
+        self.assertNotIn("Traceback", report.toPlainText())
+
     def test_mesh_region_and_group_commands_act_on_a_templatequad_mesh(self):
         """With a TemplateQuad mesh selected, the workbench's Mesh region and Mesh group
         make FreeCAD's own objects on it (FEM's commands are for Gmsh meshes only),

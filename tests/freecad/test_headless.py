@@ -492,6 +492,10 @@ class MeshObjectTest(unittest.TestCase):
                 "Edge1: failed (a damaged curve?); node 5",
             "1 face(s) refused: face 3: x (--keep-going meshes the other faces)":
                 "1 face(s) refused: Face4: x",
+            "--corners for face 998: the shape has faces 0..48":
+                "Corners for Face999: the shape has Face1..Face49",
+            "vertices 0..7 and edges 2..11":
+                "Vertex1..Vertex8 and Edge3..Edge12",
         }
         for tquad_text, freecad_text in cases.items():
             self.assertEqual(meshing.freecad_wording(tquad_text), freecad_text)

@@ -288,6 +288,30 @@ def add_properties(obj) -> None:
         obj.setEditorMode(name, 2)  # hidden (the editor mode is not saved: set on restore too)
 
 
+#: Above this many elements a new mesh is handed to FreeCAD's view hidden (_set_femmesh).
+_HIDE_WHILE_BUILDING = 100_000
+
+
+class _NoDialog:
+    """HandOver without a GUI: every step goes on."""
+
+    @staticmethod
+    def step(what: str) -> bool:
+        return True
+
+    @staticmethod
+    def close():
+        pass
+
+
+def _hand_over(obj, quads: int):
+    """The hand-over's steps: beside a dialog in the GUI (progress_dialog.HandOver)."""
+    if not FreeCAD.GuiUp:
+        return _NoDialog()
+    from .progress_dialog import HandOver
+    return HandOver(f"{obj.Part.Label}: handing {quads:,} quads to FreeCAD", quads, 2)
+
+
 class TemplateQuadMesh(StatelessProxy):
     """Proxy of a Fem::FemMeshObjectPython that meshes obj.Part with tquad."""
 
@@ -372,6 +396,13 @@ class TemplateQuadMesh(StatelessProxy):
             self._mark_out_of_date(obj)
             return
         self.mesh_requested = False  # one mesh per request, whatever recomputes follow
+        try:
+            self._execute(obj)
+        finally:
+            meshing.return_memory()
+
+    def _execute(self, obj):
+        """execute()'s meshing, once asked."""
         self.last_error = ""
         self.cancelled = False
         if getattr(obj, "ElementDimension", "2D") == "3D":
@@ -386,14 +417,22 @@ class TemplateQuadMesh(StatelessProxy):
                 return
             if mesh.refused_faces and not obj.KeepGoing:
                 raise ValueError(meshing.refusal_error(mesh))
-            femmesh = meshing.to_femmesh(mesh)
-            group_warnings = meshing.add_face_mesh_groups(femmesh, mesh, obj.Part.Shape, groups,
-                                                          obj.GroupsOfNodes)
+            hand = _hand_over(obj, len(mesh.quads))
+            try:
+                femmesh = meshing.to_femmesh(mesh) if hand.step("reading the mesh") else None
+                group_warnings = meshing.add_face_mesh_groups(femmesh, mesh, obj.Part.Shape, groups,
+                                                              obj.GroupsOfNodes) if femmesh else []
+                if femmesh is None or not hand.step("copying it into the object and building its view"):
+                    self.cancelled = True
+                    self._restore_meshed_inputs(obj)
+                    return
+                self._set_femmesh(obj, femmesh, len(mesh.quads))
+            finally:
+                hand.close()
         except (meshing.TquadMissing, ValueError) as error:
             self._fail(obj, error)
             return
 
-        obj.FemMesh = femmesh
         obj.TemplateTrees = meshing.template_tree_lines(mesh)
         obj.RefusedFaces = meshing.refused_face_lines(mesh)
         obj.RefusedFaceNames = meshing.refused_face_names(mesh)
@@ -428,6 +467,21 @@ class TemplateQuadMesh(StatelessProxy):
         for line in group_warnings:
             FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {line}\n")
 
+    @staticmethod
+    def _set_femmesh(obj, femmesh, elements: int):
+        """obj.FemMesh = femmesh. A large mesh is hidden while FreeCAD's view provider
+        rebuilds its view: shown, the view is drawn again during the rebuild, which
+        takes about half as long again (bench/GUI_CANCEL.md)."""
+        vobj = getattr(obj, "ViewObject", None) if FreeCAD.GuiUp else None
+        shown = vobj is not None and vobj.Visibility and elements > _HIDE_WHILE_BUILDING
+        if shown:
+            vobj.Visibility = False
+        try:
+            obj.FemMesh = femmesh
+        finally:
+            if shown:
+                vobj.Visibility = True
+
     def _sweep(self, obj):
         """ElementDimension 3D: the part's solids swept into hexahedra -> obj.FemMesh.
 
@@ -449,7 +503,7 @@ class TemplateQuadMesh(StatelessProxy):
         except (meshing.TquadMissing, ValueError) as error:
             self._fail(obj, error)
             return
-        obj.FemMesh = femmesh
+        self._set_femmesh(obj, femmesh, len(swept.hexes))
         for line in group_warnings:
             FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {line}\n")
         obj.TemplateTrees = [meshing.swept_solid_line(s) for s in swept.solids]

@@ -140,6 +140,22 @@ def run_plain(work, title: str = ""):
     return work(None)
 
 
+def return_memory() -> None:
+    """Give the memory a finished, failed or cancelled run freed back to the system.
+
+    The C allocator keeps freed blocks for reuse, so after a multi-gigabyte run the
+    process would stay that large; malloc_trim(0) releases them (glibc only; elsewhere
+    nothing happens)."""
+    import ctypes
+    import gc
+
+    gc.collect()
+    try:
+        ctypes.CDLL("libc.so.6").malloc_trim(0)
+    except (OSError, AttributeError):
+        pass
+
+
 def element_nodes(mesh):
     """element_nodes(): the elements' node indices (0-based), M x 4, or M x 8 for a
     second-order mesh: corners, then the middles of edges 0-1, 1-2, 2-3 and 3-0, the
@@ -529,6 +545,9 @@ REFUSAL_ADVICE = {
 # tquad's 0-based sub-shape numbers, as FreeCAD names them (1-based, capitalized).
 _NUMBERED = re.compile(r"\b(face|edge|vertex)(?:es)?( \d+(?:(?:, | and )\d+)*)\b")
 _VERTICES = re.compile(r"\bvertices( \d+(?:(?:, | and )\d+)*)\b")
+# "faces 0..48": a range of 0-based indices.
+_RANGE = re.compile(r"\b(face|edge|verti|solid)(?:s|ces) (\d+)\.\.(\d+)\b")
+_RANGE_KIND = {"face": "Face", "edge": "Edge", "verti": "Vertex", "solid": "Solid"}
 # Command-line words in tquad's messages, as the FreeCAD object calls them.
 _CLI_WORDS = (
     (re.compile(r"\s*\(--keep-going meshes the other faces\)"), ""),
@@ -553,7 +572,9 @@ def freecad_wording(message: str) -> str:
     wording changes: decisions are taken on tquad's records (codes, indices), never on
     its messages.
     """
-    text = _VERTICES.sub(lambda m: _rename("Vertex", m.group(1)), message)
+    text = _RANGE.sub(lambda m: f"{_RANGE_KIND[m.group(1)]}{int(m.group(2)) + 1}.."
+                               f"{_RANGE_KIND[m.group(1)]}{int(m.group(3)) + 1}", message)
+    text = _VERTICES.sub(lambda m: _rename("Vertex", m.group(1)), text)
     text = _NUMBERED.sub(lambda m: _rename(m.group(1).capitalize(), m.group(2)), text)
     for pattern, replacement in _CLI_WORDS:
         text = pattern.sub(replacement, text)

@@ -42,7 +42,9 @@ def confirm_large_run(label: str, quads: int, memory: int) -> bool:
     answer = QtGui.QMessageBox.question(
         FreeCADGui.getMainWindow(), "TemplateQuad",
         f"{label}: about {_amount(quads, '', 'quads')} and {_amount(memory, ' GB', 'bytes')} of memory "
-        f"at this element size (more than {limit:,} quads). Mesh anyway?", buttons, QtGui.QMessageBox.No)
+        f"at this element size (more than {limit:,} quads); FreeCAD then takes about "
+        f"{quads * HANDOVER_SECONDS_PER_QUAD:.0f} s to take the mesh in, while its window does not "
+        f"answer. Mesh anyway?", buttons, QtGui.QMessageBox.No)
     return answer == QtGui.QMessageBox.Yes
 
 
@@ -122,3 +124,50 @@ def run_with_progress(work, title: str):
         # the hand-over have none): the user asked for the document as it was.
         return None
     return outcome.get("result")
+
+
+#: A hand-over of more quads than this shows its own dialog: FreeCAD takes a mesh in
+#: C++ calls that answer no event (reading it, copying it into the object, building
+#: its view), about 11 microseconds a quad together (bench/GUI_CANCEL.md).
+HANDOVER_DIALOG_QUADS = 200_000
+#: Seconds FreeCAD takes per quad to take a mesh in (the estimate before a large run).
+HANDOVER_SECONDS_PER_QUAD = 11e-6
+
+
+class HandOver:
+    """The steps of handing a finished mesh to FreeCAD, beside a dialog with Cancel.
+
+    Each step() names what comes next and first processes the window's events, so the
+    label is painted and a Cancel pressed during the step before is seen; it returns
+    False once Cancel was pressed (the caller then keeps the previous mesh). Between
+    steps FreeCAD's own calls run and the window does not answer: the label says so.
+    """
+
+    def __init__(self, title: str, quads: int, steps: int):
+        self.title, self.steps, self.done = title, steps, 0
+        self.dialog = None
+        if quads > HANDOVER_DIALOG_QUADS:
+            self.dialog = QtGui.QProgressDialog(title, "Cancel", 0, steps, FreeCADGui.getMainWindow())
+            self.dialog.setWindowTitle("TemplateQuad")
+            self.dialog.setWindowModality(QtCore.Qt.WindowModal)
+            self.dialog.setMinimumDuration(0)
+            self.dialog.setAutoClose(False)
+            self.dialog.setAutoReset(False)
+            self.seconds = quads * HANDOVER_SECONDS_PER_QUAD
+
+    def step(self, what: str) -> bool:
+        if self.dialog is None:
+            return True
+        self.dialog.setLabelText(f"{self.title}: {what} (step {self.done + 1} of {self.steps}; about "
+                                 f"{self.seconds:.0f} s in all, the window does not answer meanwhile)")
+        self.dialog.setValue(self.done)
+        self.done += 1
+        for _ in range(3):  # shown, painted, and any pending Cancel delivered
+            QtGui.QApplication.processEvents()
+        return not self.dialog.wasCanceled()
+
+    def close(self):
+        if self.dialog is not None:
+            self.dialog.close()
+            self.dialog.deleteLater()
+            self.dialog = None
