@@ -294,6 +294,7 @@ class ShapeMeshContext {
     }
     double judged_size = result_.size;
     goal_lengths_ = lengths_;
+    graded_floor_.assign(index_.edge_count(), 0);
     if (!options_.local_sizes.empty()) {
       const SizeField field = local_size_field(index_, result_.size, options_.min_size, options_.local_sizes,
                                                options_.growth_rate, lengths_);
@@ -305,6 +306,7 @@ class ShapeMeshContext {
                                                    : static_cast<int>(std::lround(goal));
         sized_[e] = std::max(edge_floor_[e], std::max(1, graded));
         goal_lengths_[e] = std::max(1, graded) * result_.size;
+        if (field.edges[e].graded()) graded_floor_[e] = graded;
       }
       spacings_.grading = field.edges;
       face_sizes_ = field.faces;
@@ -338,7 +340,14 @@ class ShapeMeshContext {
     raise_three_edge_face_floors(index_, to_mesh_, edge_floor_);
     raise_two_edge_loop_floors(index_, to_mesh_, edge_floor_);
     for (int e = 0; e < index_.edge_count(); ++e) sized_[e] = std::max(sized_[e], edge_floor_[e]);
-    spacings_.cusp_ends = cusp_ends(index_, result_.size, lengths_);
+    // A cusp end's first segment is as long as the size there allows: an edge's local
+    // size where one applies, so that it grades like the edge's other segments.
+    std::vector<double> edge_sizes(index_.edge_count(), result_.size);
+    for (int e = 0; e < static_cast<int>(spacings_.grading.size()); ++e) {
+      const EdgeSizing& g = spacings_.grading[e];
+      if (g.own > 0) edge_sizes[e] = std::min({g.own, g.first > 0 ? g.first : g.own, g.last > 0 ? g.last : g.own});
+    }
+    spacings_.cusp_ends = cusp_ends(index_, edge_sizes, lengths_);
     needed_.assign(index_.edge_count(), 0);
     for (int f = 0; f < index_.face_count(); ++f) {
       if (!to_mesh_[f]) continue;
@@ -367,9 +376,13 @@ class ShapeMeshContext {
     for (int e = 0; e < index_.edge_count(); ++e) {
       segments_[e] = needed_[e] && !index_.contracted(e) ? std::max(segments_[e], minimum_[e]) : 0;
     }
-    // No change goes below the curvature and three-edge-face bounds or a refinement.
+    // No change goes below the curvature and three-edge-face bounds or a refinement,
+    // nor below a graded edge's ceil(F): fewer segments than the integral F of 1 / size
+    // would make neighbours differ by more than the growth rate (local_sizes.h).
     std::vector<int> floor = edge_floor_;
-    for (int e = 0; e < index_.edge_count(); ++e) floor[e] = std::max(floor[e], minimum_[e]);
+    for (int e = 0; e < index_.edge_count(); ++e) {
+      floor[e] = std::max({floor[e], minimum_[e], index_.contracted(e) ? 0 : graded_floor_[e]});
+    }
     intervals_ = assign_shape_intervals(index_, to_mesh_, goal_lengths_, result_.size, segments_, floor, wires_,
                                         &spacings_);
     // Before anything is allocated: a face of E boundary segments has at least
@@ -606,7 +619,7 @@ class ShapeMeshContext {
   // The lengths the interval assignment aims by (its goal is length / size): the
   // edges' own, or under local sizes each edge's graded count times the size.
   std::vector<double> goal_lengths_;
-  std::vector<int> sized_, minimum_, segments_, edge_floor_;
+  std::vector<int> sized_, minimum_, segments_, edge_floor_, graded_floor_;
   std::map<int, std::string> damaged_;  // faces refused before meshing, with the reason
   std::vector<char> to_mesh_;           // meshed_ without the damaged faces
   std::vector<EdgeNodes> edges_;

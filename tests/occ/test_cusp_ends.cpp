@@ -125,5 +125,30 @@ TEST(CuspEnds, TheShapePipelineSpacesTheTipsEdgesSo) {
   EXPECT_LT(nearest, 8.0 + 1e-9);
 }
 
+TEST(CuspEnds, UnderALocalSizeTheTipSegmentIsThatSizeNotTheGlobalOne) {
+  // The sliver's one face sized 2 under a global 8: each of the tip's edges starts with
+  // a segment of at most 2, so the nearest node to the tip is within 2 of it, and no
+  // two neighbouring segments of the axis edge differ by more than the growth rate.
+  ShapeMeshOptions options;
+  options.size = 8.0;
+  options.local_sizes = {LocalSize{LocalSize::Kind::face, 0, 2.0}};
+  const ShapeMeshResult result = mesh_shape(tangent_sliver(), options);
+  ASSERT_TRUE(result.mesh.refused_faces.empty());
+  double nearest = 1e300;
+  std::vector<double> axis;
+  for (const Vec3& p : result.mesh.nodes) {
+    const double d = std::hypot(p.x, p.y, p.z);
+    if (d > 1e-9) nearest = std::min(nearest, d);
+    if (std::abs(p.y) < 1e-9 && std::abs(p.z) < 1e-9) axis.push_back(p.x);
+  }
+  EXPECT_LE(nearest, 2.0 + 1e-9);
+  std::sort(axis.begin(), axis.end());
+  ASSERT_GE(axis.size(), 4u);
+  for (std::size_t i = 2; i < axis.size(); ++i) {
+    const double a = axis[i - 1] - axis[i - 2], b = axis[i] - axis[i - 1];
+    EXPECT_LE(std::max(a, b) / std::min(a, b), kDefaultGrowthRate + 1e-6) << "node " << i - 1;
+  }
+}
+
 }  // namespace
 }  // namespace tquad

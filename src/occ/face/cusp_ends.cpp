@@ -54,13 +54,14 @@ std::optional<double> chord_angle(const gp_Pnt& tip, const BRepAdaptor_Curve& a,
   return va.Angle(vb);
 }
 
-bool parting_cusp(const ShapeIndex& index, double size, const std::vector<double>& lengths, const EdgeEnd& a,
-                  const EdgeEnd& b) {
+bool parting_cusp(const ShapeIndex& index, const std::vector<double>& sizes, const std::vector<double>& lengths,
+                  const EdgeEnd& a, const EdgeEnd& b) {
   const TopoDS_Edge edge_a = TopoDS::Edge(index.edge(a.edge).Oriented(TopAbs_FORWARD));
   const TopoDS_Edge edge_b = TopoDS::Edge(index.edge(b.edge).Oriented(TopAbs_FORWARD));
   const BRepAdaptor_Curve curve_a(edge_a), curve_b(edge_b);
   const gp_Pnt tip = curve_a.Value(a.first ? curve_a.FirstParameter() : curve_a.LastParameter());
-  const double length_a = end_length(size, lengths[a.edge]), length_b = end_length(size, lengths[b.edge]);
+  const double length_a = end_length(sizes[a.edge], lengths[a.edge]);
+  const double length_b = end_length(sizes[b.edge], lengths[b.edge]);
   const auto near = chord_angle(tip, curve_a, a, length_a, curve_b, b, length_b, 0.25);
   if (!near || *near >= kCuspAngle) return false;
   const auto far = chord_angle(tip, curve_a, a, length_a, curve_b, b, length_b, 1.0);
@@ -90,20 +91,25 @@ std::map<int, std::vector<EdgeEnd>> ends_by_vertex(const ShapeIndex& index, int 
 
 }  // namespace
 
-std::vector<CuspEnds> cusp_ends(const ShapeIndex& index, double size, const std::vector<double>& lengths) {
+std::vector<CuspEnds> cusp_ends(const ShapeIndex& index, const std::vector<double>& sizes,
+                                const std::vector<double>& lengths) {
   std::vector<CuspEnds> out(index.edge_count());
   const auto mark = [&](const EdgeEnd& end) {
-    (end.first ? out[end.edge].first : out[end.edge].last) = end_length(size, lengths[end.edge]);
+    (end.first ? out[end.edge].first : out[end.edge].last) = end_length(sizes[end.edge], lengths[end.edge]);
     out[end.edge].edge_length = lengths[end.edge];
   };
   for (int f = 0; f < index.face_count(); ++f) {
     for (const auto& [vertex, ends] : ends_by_vertex(index, f, lengths)) {
-      if (ends.size() != 2 || !parting_cusp(index, size, lengths, ends[0], ends[1])) continue;
+      if (ends.size() != 2 || !parting_cusp(index, sizes, lengths, ends[0], ends[1])) continue;
       mark(ends[0]);
       mark(ends[1]);
     }
   }
   return out;
+}
+
+std::vector<CuspEnds> cusp_ends(const ShapeIndex& index, double size, const std::vector<double>& lengths) {
+  return cusp_ends(index, std::vector<double>(index.edge_count(), size), lengths);
 }
 
 }  // namespace tquad

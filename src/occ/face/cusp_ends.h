@@ -24,11 +24,15 @@ struct CuspEnds {
 };
 
 // Per edge (`lengths`: each edge's arc length, 0 for the unusable and degenerate ones,
-// which are never graded). An end's segment is min(size, length / 3), and the end is a
+// which are never graded; `sizes`: each edge's target size, the global one or a local
+// size's there). An end's segment is min(size, length / 3), and the end is a
 // cusp end when, in some face, it and another edge of that face leave their common
 // vertex so that the chords to the points at a quarter of that length make less than
 // kCuspAngle and the chords to the points at that length make at least kPartingRatio
 // times as much (straight edges meeting at a sharp corner do not part: no gain there).
+std::vector<CuspEnds> cusp_ends(const ShapeIndex& index, const std::vector<double>& sizes,
+                                const std::vector<double>& lengths);
+// The same with one size for every edge.
 std::vector<CuspEnds> cusp_ends(const ShapeIndex& index, double size, const std::vector<double>& lengths);
 
 }  // namespace tquad
