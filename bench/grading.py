@@ -12,7 +12,10 @@ Per part of the corpus and CAD sets (as bench/corpus.py selects them):
      the face has), at every node that is not a CAD vertex (those of FreeCAD's reading of
      the part, to 1e-7 D), the ratio of the longer to the shorter of its two boundary
      edges. Where two faces share an edge its nodes are counted once.
-The same is measured on the mesh of step 1, without a region: there, uneven neighbours
+On the mesh of step 1 the curvature sizing is measured too: every boundary segment
+with both nodes on a circle of one of the part's circular edges (not both at CAD
+vertices) spans at most 360/8 = 45 degrees of it, at the default 8 segments a turn.
+The same grading is measured on the mesh of step 1, without a region: there, uneven neighbours
 come from rules other than the sizes (nodes placed to face the vertices across a thin
 face, finer ends at cusps), and a region's grading is judged by what it adds to them.
 Reported: the nodes measured, the largest ratio and the nodes over 1.3 (to 1e-6), with
@@ -37,6 +40,8 @@ import corpus  # noqa: E402  (the corpus bench's part selection, runner and read
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RATE = 1.3
 FINER = 10.0
+#: The default --curvature-segments (8 per full turn): at most 45 degrees a segment.
+TURN_DEGREES = 360.0 / 8
 
 
 def boundary_ratios(points, quads, faces, vertices, tolerance):
@@ -64,6 +69,43 @@ def boundary_ratios(points, quads, faces, vertices, tolerance):
     return ratios
 
 
+def boundary_segments(quads, faces):
+    """The mesh edges (node pairs) on the faces' boundaries, each once."""
+    found = set()
+    for face in faces:
+        first, count = face["quads"]
+        face_quads = quads[first:first + count]
+        edges = np.sort(np.stack([face_quads, np.roll(face_quads, -1, axis=1)], axis=2).reshape(-1, 2), axis=1)
+        unique, uses = np.unique(edges, axis=0, return_counts=True)
+        found.update(map(tuple, unique[uses == 1].tolist()))
+    return np.array(sorted(found), dtype=np.int64).reshape(-1, 2)
+
+
+def circle_angles(points, segments, shape, vertex_nodes, tolerance):
+    """The angle (degrees) each boundary segment spans on a circle of the part: both its
+    nodes on one of the shape's circular edges' circles, not both CAD vertices (a
+    one-segment straight edge between two points of a circle is a chord, not an arc)."""
+    angles = []
+    for edge in shape.Edges:
+        try:
+            curve = edge.Curve
+        except (TypeError, RuntimeError):  # a curve type FreeCAD does not wrap: not a circle
+            continue
+        if curve.TypeId != "Part::GeomCircle":
+            continue
+        centre = np.array([curve.Center.x, curve.Center.y, curve.Center.z])
+        axis = np.array([curve.Axis.x, curve.Axis.y, curve.Axis.z])
+        d = points - centre
+        along = d @ axis
+        radial = np.linalg.norm(d - np.outer(along, axis), axis=1)
+        on = (np.abs(along) <= tolerance) & (np.abs(radial - curve.Radius) <= tolerance)
+        both = on[segments[:, 0]] & on[segments[:, 1]]
+        both &= ~(vertex_nodes[segments[:, 0]] & vertex_nodes[segments[:, 1]])
+        chords = np.linalg.norm(points[segments[both, 0]] - points[segments[both, 1]], axis=1)
+        angles.extend(np.degrees(2 * np.arcsin(np.clip(chords / (2 * curve.Radius), 0, 1))).tolist())
+    return np.array(angles)
+
+
 def run(tquad, part, timeout, folder):
     """One part: the default run for D, then the region run, measured."""
     out = {"name": part["name"], "set": part["set"]}
@@ -83,6 +125,13 @@ def run(tquad, part, timeout, folder):
     plain = np.array(list(boundary_ratios(points, quads, faces, vertices, 1e-7 * diagonal).values()))
     out.update({"plain_nodes": int(plain.size), "plain_max": float(plain.max()) if plain.size else 1.0,
                 "plain_over": int((plain > RATE * (1 + 1e-6)).sum())})
+    tolerance = 1e-7 * diagonal
+    vertex_nodes = np.zeros(len(points), dtype=bool)
+    for v in vertices:
+        vertex_nodes |= np.linalg.norm(points - v, axis=1) <= tolerance
+    angles = circle_angles(points, boundary_segments(quads, faces), shape, vertex_nodes, tolerance)
+    out.update({"arc_segments": int(angles.size), "arc_max": float(angles.max()) if angles.size else 0.0,
+                "arc_over": int((angles > TURN_DEGREES * (1 + 1e-6)).sum())})
     large = [(f.Area, k) for k, f in enumerate(shape.Faces) if f.Area >= (diagonal / 25.0) ** 2]
     if not large:
         out["error"] = "no face of one element's area"
@@ -123,12 +172,22 @@ def markdown(rows, command, seconds):
              f"| without (D/25 alone) | {plain_nodes:,} | {plain_over:,} | "
              f"{100.0 * plain_over / max(plain_nodes, 1):.3f}% | "
              f"{max((r['plain_max'] for r in ok), default=1.0):.3f} |", "",
-             f"Parts where the region run has more nodes over 1.3 than the run without: {len(worse)}.", ""]
+             f"Parts where the region run has more nodes over 1.3 than the run without: {len(worse)}.", "",
+             f"Curvature sizing (the runs without a region, default `--curvature-segments` 8): "
+             f"{sum(r['arc_segments'] for r in ok):,} boundary segments on the parts' circles span at most "
+             f"{max((r['arc_max'] for r in ok), default=0.0):.2f} degrees; "
+             f"{sum(r['arc_over'] for r in ok)} span more than {TURN_DEGREES:g}.", ""]
     if worse:
         lines += ["| part | region face | quads | nodes | over 1.3 | largest ratio | without: over 1.3 "
                   "| largest |", "|---|---:|---:|---:|---:|---:|---:|---:|"]
         lines += [f"| {r['name']} | {r['face']} | {r['quads']:,} | {r['nodes']:,} | {r['over']} | "
                   f"{r['max']:.3f} | {r['plain_over']} | {r['plain_max']:.3f} |" for r in worse]
+        lines.append("")
+    arcs = sorted((r for r in ok if r["arc_over"]), key=lambda r: -r["arc_max"])
+    if arcs:
+        lines += ["Parts with segments over 45 degrees on a circle:", "",
+                  "| part | segments on circles | over 45 degrees | largest (degrees) |", "|---|---:|---:|---:|"]
+        lines += [f"| {r['name']} | {r['arc_segments']:,} | {r['arc_over']} | {r['arc_max']:.2f} |" for r in arcs]
         lines.append("")
     failed = [r for r in rows if "error" in r]
     if failed:
@@ -150,7 +209,10 @@ def main(argv=None):
     rows = []
     with tempfile.TemporaryDirectory(prefix="tq_grading_") as folder:
         for k, part in enumerate(parts, 1):
-            rows.append(run(tquad, part, args.timeout, folder))
+            try:
+                rows.append(run(tquad, part, args.timeout, folder))
+            except Exception as error:  # a fault of this script on one part: said, not fatal
+                rows.append({"name": part["name"], "set": part["set"], "error": f"bench: {error!r}"})
             r = rows[-1]
             corpus.log(f"[{k}/{len(parts)}] {part['name']}: " +
                        (r["error"] if "error" in r else f"{r['nodes']} nodes, max {r['max']:.3f}, over {r['over']}"))

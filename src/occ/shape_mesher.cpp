@@ -341,11 +341,16 @@ class ShapeMeshContext {
     raise_two_edge_loop_floors(index_, to_mesh_, edge_floor_);
     for (int e = 0; e < index_.edge_count(); ++e) sized_[e] = std::max(sized_[e], edge_floor_[e]);
     // A cusp end's first segment is as long as the size there allows: an edge's local
-    // size where one applies, so that it grades like the edge's other segments.
+    // size where one applies, so that it grades like the edge's other segments, and
+    // never longer than the edge's length over its least count, so that a curved edge
+    // keeps at most the --curvature-segments angle per segment.
     std::vector<double> edge_sizes(index_.edge_count(), result_.size);
     for (int e = 0; e < static_cast<int>(spacings_.grading.size()); ++e) {
       const EdgeSizing& g = spacings_.grading[e];
       if (g.own > 0) edge_sizes[e] = std::min({g.own, g.first > 0 ? g.first : g.own, g.last > 0 ? g.last : g.own});
+    }
+    for (int e = 0; e < index_.edge_count(); ++e) {
+      if (edge_floor_[e] > 0 && lengths_[e] > 0) edge_sizes[e] = std::min(edge_sizes[e], lengths_[e] / edge_floor_[e]);
     }
     spacings_.cusp_ends = cusp_ends(index_, edge_sizes, lengths_);
     needed_.assign(index_.edge_count(), 0);

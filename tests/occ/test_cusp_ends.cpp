@@ -150,5 +150,35 @@ TEST(CuspEnds, UnderALocalSizeTheTipSegmentIsThatSizeNotTheGlobalOne) {
   }
 }
 
+TEST(CuspEnds, OnACurveTheTipSegmentKeepsTheCurvatureAngle) {
+  // The rectangle [0, 3] x [0, 2] less the half disk of radius 1 about (0, 1): the
+  // half circle leaves both of its ends tangent to the rectangle's sides there, two
+  // cusps. It turns 180 degrees, so 8 segments a turn allow 45 degrees each;
+  // min(size, length / 3) alone would give its end segments 60 degrees.
+  const gp_Pnt a(0, 0, 0), b(3, 0, 0), c(3, 2, 0), d(0, 2, 0);
+  const gp_Circ circle(gp_Ax2(gp_Pnt(0, 1, 0), gp_Dir(0, 0, 1)), 1.0);
+  BRepBuilderAPI_MakeWire wire;
+  wire.Add(BRepBuilderAPI_MakeEdge(a, b).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(b, c).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(c, d).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(circle, a, d).Edge());
+  ASSERT_TRUE(wire.IsDone());
+  ShapeMeshOptions options;
+  options.size = 8.0;
+  const ShapeMeshResult result = mesh_shape(BRepBuilderAPI_MakeFace(wire.Wire(), true).Face(), options);
+  ASSERT_TRUE(result.mesh.refused_faces.empty());
+  std::vector<double> angles;  // the half circle's nodes, by their angle about its centre
+  for (const Vec3& p : result.mesh.nodes) {
+    if (std::abs(std::hypot(p.x, p.y - 1.0) - 1.0) < 1e-9 && p.x >= -1e-12) angles.push_back(std::atan2(p.y - 1.0, p.x));
+  }
+  std::sort(angles.begin(), angles.end());
+  ASSERT_GE(angles.size(), 5u);
+  EXPECT_NEAR(angles.front(), -M_PI / 2, 1e-9);
+  EXPECT_NEAR(angles.back(), M_PI / 2, 1e-9);
+  for (std::size_t i = 1; i < angles.size(); ++i) {
+    EXPECT_LE(angles[i] - angles[i - 1], M_PI / 4 + 1e-9) << "segment " << i;
+  }
+}
+
 }  // namespace
 }  // namespace tquad
