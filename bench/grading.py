@@ -44,15 +44,20 @@ FINER = 10.0
 TURN_DEGREES = 360.0 / 8
 
 
+def face_boundary(quads, face):
+    """One face's boundary mesh edges: the node pairs (sorted) one of its quads has."""
+    first, count = face["quads"]
+    face_quads = quads[first:first + count]
+    edges = np.sort(np.stack([face_quads, np.roll(face_quads, -1, axis=1)], axis=2).reshape(-1, 2), axis=1)
+    unique, uses = np.unique(edges, axis=0, return_counts=True)
+    return unique[uses == 1]
+
+
 def boundary_ratios(points, quads, faces, vertices, tolerance):
     """{node: ratio} over the faces' boundaries (see the module's docstring)."""
     ratios = {}
     for face in faces:
-        first, count = face["quads"]
-        face_quads = quads[first:first + count]
-        edges = np.sort(np.stack([face_quads, np.roll(face_quads, -1, axis=1)], axis=2).reshape(-1, 2), axis=1)
-        unique, uses = np.unique(edges, axis=0, return_counts=True)
-        boundary = unique[uses == 1]
+        boundary = face_boundary(quads, face)
         neighbours = {}
         for a, b in boundary.tolist():
             neighbours.setdefault(a, []).append(b)
@@ -73,11 +78,7 @@ def boundary_segments(quads, faces):
     """The mesh edges (node pairs) on the faces' boundaries, each once."""
     found = set()
     for face in faces:
-        first, count = face["quads"]
-        face_quads = quads[first:first + count]
-        edges = np.sort(np.stack([face_quads, np.roll(face_quads, -1, axis=1)], axis=2).reshape(-1, 2), axis=1)
-        unique, uses = np.unique(edges, axis=0, return_counts=True)
-        found.update(map(tuple, unique[uses == 1].tolist()))
+        found.update(map(tuple, face_boundary(quads, face).tolist()))
     return np.array(sorted(found), dtype=np.int64).reshape(-1, 2)
 
 
