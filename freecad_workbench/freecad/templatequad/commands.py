@@ -159,21 +159,33 @@ class RemeshCommand:
                 return
 
 
-class AddToMeshCommand:
+class OneMeshCommand:
+    """A command on the one selected TemplateQuad mesh: its name, tip and icon, and
+    active while exactly one mesh is selected."""
+
+    def __init__(self, menu: str, tip: str, icon: str = ""):
+        self.menu, self.tip, self.icon = menu, tip, icon or paths.icon("TemplateQuad_Mesh")
+
+    def GetResources(self):
+        return {"Pixmap": self.icon, "MenuText": self.menu, "ToolTip": self.tip}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None and len(selected_meshes()) == 1
+
+
+class AddToMeshCommand(OneMeshCommand):
     """A FEM mesh region or mesh group on the one selected TemplateQuad mesh."""
 
     def __init__(self, kind: str, menu: str, tip: str, icon: str):
-        self.kind, self.menu, self.tip, self.icon = kind, menu, tip, icon
+        super().__init__(menu, tip, icon)
+        self.kind = kind
 
     def GetResources(self):
         try:
             import FemGui  # noqa: F401  (registers FEM's icons, these among them)
         except ImportError:
             pass
-        return {"Pixmap": self.icon, "MenuText": self.menu, "ToolTip": self.tip}
-
-    def IsActive(self):
-        return FreeCAD.ActiveDocument is not None and len(selected_meshes()) == 1
+        return super().GetResources()
 
     def Activated(self):
         mesh = selected_meshes()[0]
@@ -204,17 +216,13 @@ def show_worst_elements(mesh) -> list:
     return lines
 
 
-class ShowWorstCommand:
+class ShowWorstCommand(OneMeshCommand):
     """The selected mesh's worst elements, highlighted and zoomed to."""
 
-    def GetResources(self):
-        return {"Pixmap": paths.icon("TemplateQuad_Mesh"),
-                "MenuText": "Show worst elements",
-                "ToolTip": ("Highlight the worst elements (lowest scaled Jacobian) of the selected "
-                            "TemplateQuad mesh, zoom onto them and list them with their faces")}
-
-    def IsActive(self):
-        return FreeCAD.ActiveDocument is not None and len(selected_meshes()) == 1
+    def __init__(self):
+        super().__init__("Show worst elements",
+                         "Highlight the worst elements (lowest scaled Jacobian) of the selected TemplateQuad "
+                         "mesh, zoom onto them and list them with their faces")
 
     def Activated(self):
         show_worst_elements(selected_meshes()[0])
@@ -245,17 +253,13 @@ def export_with_groups(mesh, path: str) -> None:
         raise
 
 
-class ExportGroupsCommand:
+class ExportGroupsCommand(OneMeshCommand):
     """The selected mesh and its groups to an .inp file."""
 
-    def GetResources(self):
-        return {"Pixmap": paths.icon("TemplateQuad_Mesh"),
-                "MenuText": "Export mesh with groups (.inp)",
-                "ToolTip": ("Write the selected TemplateQuad mesh to an Abaqus/CalculiX .inp file "
-                            "with its mesh groups as element and node sets")}
-
-    def IsActive(self):
-        return FreeCAD.ActiveDocument is not None and len(selected_meshes()) == 1
+    def __init__(self):
+        super().__init__("Export mesh with groups (.inp)",
+                         "Write the selected TemplateQuad mesh to an Abaqus/CalculiX .inp file with its mesh "
+                         "groups as element and node sets")
 
     def Activated(self):
         from PySide import QtGui

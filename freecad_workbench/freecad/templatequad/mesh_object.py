@@ -412,19 +412,20 @@ class TemplateQuadMesh(StatelessProxy):
             groups = meshing.mesh_groups(obj.MeshGroupList)
             mesh = self._mesh(obj)
             if mesh is None:  # the user cancelled: the mesh and its inputs stay as they were
-                self.cancelled = True
-                self._restore_meshed_inputs(obj)
+                self._cancel(obj)
                 return
             if mesh.refused_faces and not obj.KeepGoing:
                 raise ValueError(meshing.refusal_error(mesh))
             hand = _hand_over(obj, len(mesh.quads))
             try:
-                femmesh = meshing.to_femmesh(mesh) if hand.step("reading the mesh") else None
+                if not hand.step("reading the mesh"):
+                    self._cancel(obj)
+                    return
+                femmesh = meshing.to_femmesh(mesh)
                 group_warnings = meshing.add_face_mesh_groups(femmesh, mesh, obj.Part.Shape, groups,
-                                                              obj.GroupsOfNodes) if femmesh else []
-                if femmesh is None or not hand.step("copying it into the object and building its view"):
-                    self.cancelled = True
-                    self._restore_meshed_inputs(obj)
+                                                              obj.GroupsOfNodes)
+                if not hand.step("copying it into the object and building its view"):
+                    self._cancel(obj)
                     return
                 self._set_femmesh(obj, femmesh, len(mesh.quads))
             finally:
@@ -466,6 +467,11 @@ class TemplateQuadMesh(StatelessProxy):
             FreeCAD.Console.PrintMessage(f"TemplateQuad: {obj.Label}: {obj.Part.Label}: {absorbed}\n")
         for line in group_warnings:
             FreeCAD.Console.PrintWarning(f"TemplateQuad: {obj.Label}: {line}\n")
+
+    def _cancel(self, obj):
+        """The user cancelled: the mesh kept, and the inputs it was made with put back."""
+        self.cancelled = True
+        self._restore_meshed_inputs(obj)
 
     @staticmethod
     def _set_femmesh(obj, femmesh, elements: int):

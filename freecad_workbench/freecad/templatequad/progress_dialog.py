@@ -128,10 +128,10 @@ def run_with_progress(work, title: str):
 
 #: A hand-over of more quads than this shows its own dialog: FreeCAD takes a mesh in
 #: C++ calls that answer no event (reading it, copying it into the object, building
-#: its view), about 11 microseconds a quad together (bench/GUI_CANCEL.md).
+#: its view), about 18 microseconds a quad together at ten million quads (bench/GUI_CANCEL.md).
 HANDOVER_DIALOG_QUADS = 200_000
 #: Seconds FreeCAD takes per quad to take a mesh in (the estimate before a large run).
-HANDOVER_SECONDS_PER_QUAD = 11e-6
+HANDOVER_SECONDS_PER_QUAD = 18e-6
 
 
 class HandOver:
