@@ -2,7 +2,12 @@
 // order, and the mesh a face keeps names the route that made it.
 #include <gtest/gtest.h>
 
+#include <BRepAlgoAPI_Common.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -15,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "core/mesh/quality.h"
 #include "occ/face/face_route.h"
 #include "occ/model/shape_index.h"
 #include "occ/shape_mesher.h"
@@ -41,8 +47,8 @@ std::set<std::string> route_set(const std::map<int, std::string>& routes) {
 TEST(FaceRoutes, TheRegistryListsEachRouteOnceInItsOrder) {
   const std::vector<std::string> names = face_route_names();
   const std::vector<std::string> expected{"cube sphere", "mapped ring and O-grid", "templates on corners",
-                                          "polar disk",  "pole sector",            "disk in space",
-                                          "disk O-grid", "decomposition"};
+                                          "tip strip",   "polar disk",             "pole sector",
+                                          "disk in space", "disk O-grid",          "decomposition"};
   EXPECT_EQ(names, expected);
 }
 
@@ -75,6 +81,53 @@ TEST(FaceRoutes, EachFaceNamesTheRouteOfItsMesh) {
   const std::set<std::string> decomposed = route_set(routes_of(three));
   EXPECT_TRUE(std::any_of(decomposed.begin(), decomposed.end(),
                           [](const std::string& r) { return r.rfind("decomposition", 0) == 0; }));
+}
+
+// A hex head chamfered by a 30-degree cone (a nut's or a cap screw's): the cone's six
+// faces each lie between the chamfer circle and two hyperbolas on the flats, with
+// tips of a few degrees where the circle meets them. With the circle at 1.04 times the
+// flats' distance, its arcs and the hyperbolas below them get equal counts, and each
+// cone face is meshed by the tip strip: two rows of quads along it.
+TEST(FaceRoutes, AChamferedHexHeadsConeFacesAreTipStrips) {
+  const double flat = 5.0, corner = flat / std::cos(M_PI / 6), height = 5.0, chamfer_radius = 5.2;
+  BRepBuilderAPI_MakePolygon hexagon;
+  // Corners off the cone's seam (at angle 0), which would cut one cone face in two.
+  for (int k = 0; k < 6; ++k) {
+    const double angle = (k + 0.5) * M_PI / 3;
+    hexagon.Add(gp_Pnt(corner * std::cos(angle), corner * std::sin(angle), 0));
+  }
+  hexagon.Close();
+  const TopoDS_Shape prism =
+      BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(hexagon.Wire()).Face(), gp_Vec(0, 0, height)).Shape();
+  const double drop = std::tan(M_PI / 6);  // the cone falls 30 degrees from the top face
+  const double base_radius = chamfer_radius + height / drop;
+  const TopoDS_Shape cone = BRepPrimAPI_MakeCone(base_radius, chamfer_radius, height).Shape();
+  const TopoDS_Shape head = BRepAlgoAPI_Common(prism, cone).Shape();
+  ShapeMeshOptions options;
+  const ShapeMeshResult result = mesh_shape(head, options);
+  ASSERT_TRUE(result.mesh.refused_faces.empty());
+  const ShapeIndex index(head);
+  int cone_faces = 0;
+  for (const FaceMesh& f : result.mesh.faces) {
+    if (BRepAdaptor_Surface(index.face(f.face)).GetType() != GeomAbs_Cone) continue;
+    ++cone_faces;
+    EXPECT_EQ(f.route, "tip strip") << "face " << f.face << ": " << f.template_tree;
+    // Two rows between the tips: 2n - 2 quads for a loop of 2n segments (the edges
+    // of one quad only).
+    std::map<std::pair<NodeId, NodeId>, int> uses;
+    double worst = 1;
+    for (std::int64_t q = f.first_quad; q < f.first_quad + f.quad_count; ++q) {
+      const Quad& quad = result.mesh.quads[q];
+      for (int i = 0; i < 4; ++i) ++uses[std::minmax(quad[i], quad[(i + 1) % 4])];
+      const std::array<Vec3, 4> p{result.mesh.nodes[quad[0]], result.mesh.nodes[quad[1]], result.mesh.nodes[quad[2]],
+                                  result.mesh.nodes[quad[3]]};
+      worst = std::min(worst, own_scaled_jacobian(p));
+    }
+    const auto loop = std::count_if(uses.begin(), uses.end(), [](const auto& u) { return u.second == 1; });
+    EXPECT_EQ(f.quad_count, loop - 2) << "face " << f.face;
+    EXPECT_GT(worst, 0.0) << "face " << f.face;
+  }
+  EXPECT_EQ(cone_faces, 6);
 }
 
 }  // namespace

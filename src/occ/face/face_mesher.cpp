@@ -19,6 +19,7 @@
 #include "core/geometry/mean_plane.h"
 #include "core/decomposition/planar_domain.h"
 #include "core/templates/pole_sector_mesh.h"
+#include "core/templates/tip_strip.h"
 #include "core/face_refusal.h"
 #include "core/input_error.h"
 #include "core/geometry/planar_self_intersection.h"
@@ -420,6 +421,53 @@ std::optional<FaceMeshResult> mesh_pole_sector(const TopoDS_Face& face, const Po
       mesh_sector_in_halves(sector.boundary.uv, sector.apex, sector.rim_start, sector.rim_end, options);
   if (!mesh) return std::nullopt;
   return place_parameter_mesh(face, sector.boundary, nodes, std::move(*mesh), start);
+}
+
+std::optional<std::pair<int, int>> tip_strip_tips(const FaceBoundary& b, const std::vector<Vec3>& nodes) {
+  if (b.inner_wires > 0 || b.polar || b.has_degenerate_edge) return std::nullopt;
+  std::vector<int> tips;
+  for (std::size_t k = 0; k < b.turn.size(); ++k) {
+    if (std::abs(b.turn[k]) >= kStripTipTurn) tips.push_back(b.edge_start[k]);
+  }
+  const int count = static_cast<int>(b.nodes.size());
+  if (tips.size() != 2 || count < 6) return std::nullopt;
+  const auto at = [&](int position) { return nodes[b.nodes[((position % count) + count) % count]]; };
+  // Each chain's points by their share of its length; the band's width at a point of
+  // one chain is its distance to the point at the same share of the other.
+  const auto chain = [&](int from, int segments, int step) {
+    std::vector<Vec3> points{at(from)};
+    std::vector<double> shares{0};
+    for (int i = 1; i <= segments; ++i) {
+      points.push_back(at(from + step * i));
+      shares.push_back(shares.back() + distance(points[i - 1], points[i]));
+    }
+    for (double& share : shares) share /= shares.back() > 0 ? shares.back() : 1;
+    return std::pair(points, shares);
+  };
+  const int along_a = ((tips[1] - tips[0]) % count + count) % count;
+  const auto [a, a_shares] = chain(tips[0], along_a, 1);
+  const auto [c, c_shares] = chain(tips[0], count - along_a, -1);
+  double length = 0, widest = 0;
+  for (int i = 0; i < count; ++i) length += distance(at(i), at(i + 1));
+  std::size_t j = 1;
+  for (std::size_t i = 1; i + 1 < a.size(); ++i) {
+    while (j + 1 < c.size() && c_shares[j] < a_shares[i]) ++j;
+    const double span = c_shares[j] - c_shares[j - 1];
+    const double t = span > 0 ? (a_shares[i] - c_shares[j - 1]) / span : 0.0;
+    widest = std::max(widest, distance(a[i], c[j - 1] + t * (c[j] - c[j - 1])));
+  }
+  if (widest > kStripWidth * length / count) return std::nullopt;
+  return std::pair(tips[0], tips[1]);
+}
+
+std::optional<FaceMeshResult> mesh_face_tip_strip(const TopoDS_Face& face, const FaceBoundary& b,
+                                                  const std::vector<Vec3>& nodes) {
+  const std::optional<std::pair<int, int>> tips = tip_strip_tips(b, nodes);
+  if (!tips) return std::nullopt;
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<QuadMesh> mesh = mesh_tip_strip(b.uv, tips->first, tips->second);
+  if (!mesh) return std::nullopt;
+  return place_parameter_mesh(face, b, nodes, std::move(*mesh), start);
 }
 
 std::string corner_text(const FaceBoundary& b, const std::vector<int>& corners) {

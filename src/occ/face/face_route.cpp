@@ -134,6 +134,7 @@ struct NaturalChoice {
   FaceMeshResult best;
   std::vector<FaceMeshResult> other_decompositions;
   std::optional<FaceMeshResult> patches_searched;
+  std::vector<FaceMeshResult> judged_smoothed;  // RouteContext::judged_smoothed
 };
 
 // The natural choice smoothed (when `smooth`): its best mesh, or, where smoothing
@@ -144,7 +145,10 @@ FaceMeshResult settle_natural_choice(const TopoDS_Face& face, bool seam, const s
   FaceMeshResult& best = choice.best;
   if (!smooth) {
     if (choice.patches_searched && better_worst_then_mean(*choice.patches_searched, best)) {
-      return std::move(*choice.patches_searched);
+      best = std::move(*choice.patches_searched);
+    }
+    for (FaceMeshResult& layout : choice.judged_smoothed) {
+      if (better_worst_then_mean(layout, best)) best = std::move(layout);
     }
     return std::move(best);
   }
@@ -177,6 +181,14 @@ FaceMeshResult settle_natural_choice(const TopoDS_Face& face, bool seam, const s
   if (choice.patches_searched) {
     smooth_face_mesh(face, seam, nodes, *choice.patches_searched);
     if (better_worst_then_mean(*choice.patches_searched, best)) best = std::move(*choice.patches_searched);
+  }
+  // Each judged layout as placed or smoothed, whichever ranks higher: where its worst
+  // corner is the CAD's own (a tip), the smoother's max-min moves can only lower the mean.
+  for (FaceMeshResult& layout : choice.judged_smoothed) {
+    FaceMeshResult smoothed = layout;
+    smooth_face_mesh(face, seam, nodes, smoothed);
+    if (better_worst_then_mean(smoothed, layout)) layout = std::move(smoothed);
+    if (better_worst_then_mean(layout, best)) best = std::move(layout);
   }
   return std::move(best);
 }
@@ -219,6 +231,9 @@ struct RouteContext {
   std::vector<FaceMeshResult> other_decompositions;
   std::optional<FaceMeshResult> patches_searched;
   bool patches_tried = false;
+  // Layouts whose shape smoothing finishes (the tip strip's kites): ranked against the
+  // natural choice once both are smoothed, not before.
+  std::vector<FaceMeshResult> judged_smoothed;
 };
 
 // The candidates of the routes, ranked by one order (better_face_mesh: fewer bad
@@ -230,7 +245,7 @@ class Candidates {
   void proposing(const char* route) { route_ = route; }
   // Whether r became the best.
   bool keep(FaceMeshResult&& r) {
-    r.route = route_;
+    if (r.route.empty()) r.route = route_;
     if (best_ && !better_face_mesh(r, *best_)) return false;
     best_ = std::move(r);
     return true;
@@ -285,7 +300,8 @@ void search_patches(RouteContext& c) {
 //     one layout without a corner of 180 degrees at a pole; alone;
 //   - one hole: a structured ring when both loops have the same count
 //     (mapped_ring.h), and the O-grid of two halves (o_grid.h, face_decomposed.h);
-//   - no hole: the templates on each corner choice (face_corners.h); around a pole,
+//   - no hole: the templates on each corner choice (face_corners.h); a thin band
+//     between two sharp tips, the tip strip (face_mesher.h); around a pole,
 //     polar templates and a cone's tip as the apex of its flattened sector
 //     (pole_sector); a pole on the rim (a sphere's lune), the disk's O-grid in space;
 //     a disk (one smooth loop) the disk's O-grid (disk_o_grid.h);
@@ -322,6 +338,18 @@ const std::vector<FaceRoute>& face_routes() {
          }
        },
        Refusal::noted, false},
+      {"tip strip",
+       [](const RouteContext& c, const Candidates&) {
+         return c.boundary.inner_wires == 0 && !c.boundary.polar && !c.boundary.has_degenerate_edge &&
+                !c.user_corners;
+       },
+       [](RouteContext& c, Candidates&) {
+         if (auto strip = mesh_face_tip_strip(c.index.face(c.f), c.boundary, c.nodes)) {
+           strip->route = "tip strip";
+           c.judged_smoothed.push_back(std::move(*strip));
+         }
+       },
+       Refusal::noted_without_mesh, false},
       {"polar disk",
        [](const RouteContext& c, const Candidates&) {
          return c.boundary.inner_wires == 0 && c.boundary.polar && !c.user_corners;
@@ -438,6 +466,10 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
       if (route.refusal == Refusal::noted || !candidates.best()) candidates.refused(e);
     }
   }
+  if (!candidates.best() && !context.judged_smoothed.empty()) {
+    candidates.keep(std::move(context.judged_smoothed.front()));
+    context.judged_smoothed.erase(context.judged_smoothed.begin());
+  }
   if (!candidates.best()) {
     if (candidates.code() == RefusalCode::internal) throw std::runtime_error(candidates.refusal());
     throw FaceRefusalError(candidates.code(), candidates.refusal());
@@ -479,7 +511,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
   const bool seam = std::find(boundary.is_seam.begin(), boundary.is_seam.end(), 1) != boundary.is_seam.end();
   const auto smoothing = std::chrono::steady_clock::now();
   NaturalChoice natural{std::move(best), std::move(context.other_decompositions),
-                        std::move(context.patches_searched)};
+                        std::move(context.patches_searched), std::move(context.judged_smoothed)};
   best = settle_natural_choice(index.face(f), seam, nodes, options.smooth, natural);
   if (search_corners) {
     search.natural_worst = best.worst_corner;
