@@ -27,6 +27,9 @@ int longest_free_edge(const Side& side, const std::vector<int>& chain_of, const 
   return chosen;
 }
 
+// Passes over the bands: the second balances again what a later band unbalanced.
+constexpr int kBalancePasses = 3;
+
 }  // namespace
 
 int balance_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshed, std::vector<int>& segments,
@@ -55,6 +58,7 @@ int balance_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshe
   std::vector<Vec3> nodes;
   const std::vector<EdgeNodes> edges = discretize_edges(index, provisional, nodes, kept);
   int balanced = 0;
+  std::vector<std::pair<int, std::vector<Side>>> bands;  // face, its four sides
   for (int f : candidates) {
     FaceBoundary b;
     std::vector<int> corners;
@@ -80,41 +84,64 @@ int balance_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshe
       }
     }
     if (!whole_edges) continue;
-    for (int k = 0; k < 2; ++k) {
-      if (sides[k + 1].segments > kNarrowBand || sides[(k + 3) % 4].segments > kNarrowBand) continue;
-      const Side& a = sides[k];
-      const Side& c = sides[k + 2];
-      const bool unequal = a.segments != c.segments;
-      if (unequal) {
-        const Side& shorter = a.segments < c.segments ? a : c;
-        // The longest edge of the shorter side takes the difference: a free edge
-        // alone, or else a chained edge with its whole chain (whose faces stay mapped).
-        int chosen = longest_free_edge(shorter, chain_of, segments);
-        if (chosen < 0) {
-          for (int e : shorter.edges) if (chosen < 0 || segments[e] > segments[chosen]) chosen = e;
+    bands.push_back({f, std::move(sides)});
+  }
+  // Each band's sides counted as the segments stand now, not as they were discretized
+  // above: a band sharing an edge with one balanced before it sees that edge's new
+  // count (taken from the discretization, a second band raised a shared edge by its
+  // whole first difference and left the first band with 15 segments against 9, a
+  // transition one quad across). A band a later one unbalanced is balanced again in
+  // the next pass; counts only grow, and kBalancePasses bounds the passes.
+  const auto live = [&](const Side& side) {
+    int count = 0;
+    for (int e : side.edges) count += segments[e];
+    return count;
+  };
+  for (int pass = 0; pass < kBalancePasses; ++pass) {
+    bool changed = false;
+    for (auto& [f, sides] : bands) {
+      for (Side& side : sides) side.segments = live(side);
+      for (int k = 0; k < 2; ++k) {
+        if (sides[k + 1].segments > kNarrowBand || sides[(k + 3) % 4].segments > kNarrowBand) continue;
+        const Side& a = sides[k];
+        const Side& c = sides[k + 2];
+        const bool unequal = a.segments != c.segments;
+        if (unequal) {
+          const Side& shorter = a.segments < c.segments ? a : c;
+          // The longest edge of the shorter side takes the difference: a free edge
+          // alone, or else a chained edge with its whole chain (whose faces stay mapped).
+          int chosen = longest_free_edge(shorter, chain_of, segments);
+          if (chosen < 0) {
+            for (int e : shorter.edges) if (chosen < 0 || segments[e] > segments[chosen]) chosen = e;
+          }
+          if (chosen < 0) continue;
+          const int difference = std::abs(a.segments - c.segments);
+          if (chain_of[chosen] < 0) segments[chosen] += difference;
+          else for (int e : chains[chain_of[chosen]]) segments[e] += difference;
+          ++balanced;
+          changed = true;
         }
-        if (chosen < 0) continue;
-        const int difference = std::abs(a.segments - c.segments);
-        if (chain_of[chosen] < 0) segments[chosen] += difference;
-        else for (int e : chains[chain_of[chosen]]) segments[e] += difference;
-        ++balanced;
+        // Ends of different counts (1 and 2) leave the band odd, and the parity fix
+        // would change some edge of it: the shorter end's longest free edge takes the
+        // difference, and the band is even and mapped.
+        const Side& end1 = sides[k + 1];
+        const Side& end2 = sides[(k + 3) % 4];
+        if (end1.segments != end2.segments) {
+          const int e = longest_free_edge(end1.segments < end2.segments ? end1 : end2, chain_of, segments);
+          if (e >= 0) {
+            segments[e] += std::abs(end1.segments - end2.segments);
+            changed = true;
+          }
+        }
+        const int ea = longest_free_edge(a, chain_of, segments), ec = longest_free_edge(c, chain_of, segments);
+        if (paired && ea >= 0 && ec >= 0 && ea != ec && !in_pair[ea] && !in_pair[ec]) {
+          paired->push_back({ea, ec});
+          in_pair[ea] = in_pair[ec] = 1;
+        }
+        if (unequal) break;
       }
-      // Ends of different counts (1 and 2) leave the band odd, and the parity fix
-      // would change some edge of it: the shorter end's longest free edge takes the
-      // difference, and the band is even and mapped.
-      const Side& end1 = sides[k + 1];
-      const Side& end2 = sides[(k + 3) % 4];
-      if (end1.segments != end2.segments) {
-        const int e = longest_free_edge(end1.segments < end2.segments ? end1 : end2, chain_of, segments);
-        if (e >= 0) segments[e] += std::abs(end1.segments - end2.segments);
-      }
-      const int ea = longest_free_edge(a, chain_of, segments), ec = longest_free_edge(c, chain_of, segments);
-      if (paired && ea >= 0 && ec >= 0 && ea != ec && !in_pair[ea] && !in_pair[ec]) {
-        paired->push_back({ea, ec});
-        in_pair[ea] = in_pair[ec] = 1;
-      }
-      if (unequal) break;
     }
+    if (!changed) break;
   }
   return balanced;
 }

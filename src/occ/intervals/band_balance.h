@@ -8,7 +8,9 @@
 // with its whole chain (so the chain's faces stay mapped). Ends of 1 and 2 segments
 // are made equal likewise, or the band stays odd and the parity fix changes one of
 // its edges (a long side, which then needs a transition, its quads far worse than the
-// mapped grid's).
+// mapped grid's). Sides are counted as the segments stand when the band is looked
+// at, so two bands sharing an edge see each other's changes, and a band that a later
+// one unbalanced is balanced again in a further pass.
 #pragma once
 
 #include <utility>
