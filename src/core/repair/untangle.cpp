@@ -39,6 +39,7 @@ class Untangler {
         quads_of_(adjacency_.quads_of) {
     normals_.resize(mesh.nodes.size());
     for (std::size_t n = 0; n < mesh.nodes.size(); ++n) {
+      poll_cancellation(4);
       normals_[n] = plane_normal ? *plane_normal : estimated_normal(static_cast<NodeId>(n));
     }
   }
@@ -58,7 +59,10 @@ class Untangler {
 
   std::vector<int> bad_quads() const {
     std::vector<int> bad;
-    for (std::size_t k = 0; k < mesh_.quads.size(); ++k) if (is_bad(static_cast<int>(k))) bad.push_back(static_cast<int>(k));
+    for (std::size_t k = 0; k < mesh_.quads.size(); ++k) {
+      poll_cancellation(4);
+      if (is_bad(static_cast<int>(k))) bad.push_back(static_cast<int>(k));
+    }
     return bad;
   }
 
@@ -108,6 +112,7 @@ class Untangler {
   void grow_ring(Zone& z) const {
     const std::size_t count = z.nodes.size();
     for (std::size_t i = 0; i < count; ++i) {
+      poll_cancellation();
       const NodeId n = z.nodes[i];
       for (int k = neighbours_.offsets[n]; k < neighbours_.offsets[n + 1]; ++k) add_to(z, neighbours_.items[k]);
     }
@@ -151,6 +156,7 @@ class Untangler {
     Settling settling(mesh_.nodes.size());
     for (int pass = 0, stalled = 0; pass < kPasses && !bad.empty() && stalled < 3; ++pass) {
       for (NodeId n : z.nodes) {
+        poll_cancellation(16);
         if (settling.settled(n, *this)) continue;
         const Vec3 before = mesh_.nodes[n];
         improve_node(n);
@@ -289,6 +295,7 @@ class Untangler {
   // One Gauss-Seidel Laplacian sweep; the move is projected on the node's tangent plane.
   void laplacian_sweep(const std::vector<NodeId>& nodes) {
     for (NodeId n : nodes) {
+      poll_cancellation(2);
       Vec3 mean;
       const int first = neighbours_.offsets[n], last = neighbours_.offsets[n + 1];
       for (int k = first; k < last; ++k) mean += mesh_.nodes[neighbours_.items[k]];

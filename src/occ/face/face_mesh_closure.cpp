@@ -68,9 +68,15 @@ std::string face_mesh_closure_problem(const ShapeIndex& index, int face, const s
     poll_cancellation(8);
     for (int k = 0; k < 4; ++k) uses.push_back(edge_key(global(q[k]), global(q[(k + 1) % 4])));
   }
-  const auto before = [](const EdgeKey& a, const EdgeKey& b) { return a.low != b.low ? a.low < b.low : a.high < b.high; };
+  // The sort of a large face's edges takes seconds: it looks at the cancel flag every
+  // kSortPoll comparisons (a count in the comparator, too cheap to see in its time).
+  constexpr std::size_t kSortPoll = 1 << 10;
+  std::size_t compared = 0;
+  const auto before = [&compared](const EdgeKey& a, const EdgeKey& b) {
+    if (++compared % kSortPoll == 0) poll_cancellation(kSortPoll);
+    return a.low != b.low ? a.low < b.low : a.high < b.high;
+  };
   std::sort(uses.begin(), uses.end(), before);
-  poll_cancellation(uses.size());
   // Inside: two quads, no edge segment. On the boundary: one quad, one segment. Two
   // edges of one segment each between the same two nodes (a seam an IGES file gives
   // as two edges) are one mesh edge between two quads, like a seam.

@@ -1,4 +1,5 @@
 #include "occ/face/surface_smoothing.h"
+#include "core/cancellation.h"
 
 #include <BRepAdaptor_Surface.hxx>
 
@@ -61,6 +62,7 @@ std::vector<Vec3> unit_normals(const std::vector<Vec3>& normal) {
   std::vector<Vec3> unit;
   unit.reserve(normal.size());
   for (const Vec3& n : normal) {
+    poll_cancellation();
     const double length = norm(n);
     unit.push_back(length > 0 ? (1.0 / length) * n : Vec3{});
   }
@@ -74,12 +76,14 @@ std::vector<bool> around_changed_quads(const std::vector<Quad>& before, const st
                                        std::size_t nodes, int rings) {
   std::vector<bool> around(nodes, false);
   for (std::size_t q = 0; q < changed.size(); ++q) {
+    poll_cancellation();
     if (q < before.size() && changed[q] == before[q]) continue;
     for (NodeId n : changed[q]) around[n] = true;
   }
   for (int ring = 0; ring < rings; ++ring) {
     std::vector<bool> grown = around;
     for (const Quad& q : changed) {
+      poll_cancellation(2);
       if (std::none_of(q.begin(), q.end(), [&](NodeId n) { return around[n]; })) continue;
       for (NodeId n : q) grown[n] = true;
     }
@@ -106,11 +110,17 @@ void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<
 
   std::vector<Vec3> position;
   position.reserve(mesh.param.size());
-  for (NodeId id : mesh.boundary_nodes) position.push_back(nodes[id]);
+  for (NodeId id : mesh.boundary_nodes) {
+    poll_cancellation();
+    position.push_back(nodes[id]);
+  }
   position.insert(position.end(), mesh.interior.begin(), mesh.interior.end());
   if (mesh.normal.size() != mesh.param.size()) {  // not those check_on_surface measured
     mesh.normal.clear();
-    for (const Vec3& p : mesh.param) mesh.normal.push_back(outer_normal(surface, reversed, to_uv(p)));
+    for (const Vec3& p : mesh.param) {
+      poll_cancellation(16);
+      mesh.normal.push_back(outer_normal(surface, reversed, to_uv(p)));
+    }
   }
   const PlaceNode place = [&](int, const Vec3& p, Vec3& at, Vec3& n) {
     const Vec3 uv = to_uv(p);
