@@ -1,43 +1,20 @@
 #include "core/templates/tip_strip.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
+#include "core/decomposition/planar_domain.h"
+#include "core/mesh/quality.h"
+
 namespace tquad {
-
-namespace {
-
-// Twice the signed area of the loop in its (x, y) plane.
-double signed_area2(const std::vector<Vec3>& p) {
-  double s = 0;
-  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
-    const Vec3& a = p[i];
-    const Vec3& b = p[(i + 1) % n];
-    s += a.x * b.y - b.x * a.y;
-  }
-  return s;
-}
-
-// Whether every corner of q turns the loop's way (sign > 0: counter-clockwise) in (x, y).
-bool convex(const std::vector<Vec3>& nodes, const Quad& q, double sign) {
-  for (int i = 0; i < 4; ++i) {
-    const Vec3& prev = nodes[q[(i + 3) % 4]];
-    const Vec3& here = nodes[q[i]];
-    const Vec3& next = nodes[q[(i + 1) % 4]];
-    const double cross = (next.x - here.x) * (prev.y - here.y) - (next.y - here.y) * (prev.x - here.x);
-    if (!(sign * cross > 0)) return false;
-  }
-  return true;
-}
-
-}  // namespace
 
 std::optional<QuadMesh> mesh_tip_strip(const std::vector<Vec3>& points, int tip_a, int tip_b) {
   const int count = static_cast<int>(points.size());
   if (tip_a < 0 || tip_b < 0 || tip_a >= count || tip_b >= count || tip_a == tip_b) return std::nullopt;
   const int n = ((tip_b - tip_a) % count + count) % count;  // segments of chain A (and of chain B)
   if (2 * n != count || n < 3) return std::nullopt;
-  const double sign = signed_area2(points) > 0 ? 1.0 : -1.0;
+  const Vec3 up{0, 0, twice_signed_area(points) > 0 ? 1.0 : -1.0};  // the loop's way round
   const auto a = [&](int i) { return (tip_a + i) % count; };          // chain A, forward
   const auto b = [&](int i) { return ((tip_a - i) % count + count) % count; };  // chain B, backward
   QuadMesh mesh;
@@ -71,7 +48,8 @@ std::optional<QuadMesh> mesh_tip_strip(const std::vector<Vec3>& points, int tip_
   mesh.quads.push_back(
       {static_cast<NodeId>(a(n - 1)), static_cast<NodeId>(a(n)), static_cast<NodeId>(b(n - 1)), m(n - 1)});
   for (const Quad& q : mesh.quads) {
-    if (!convex(mesh.nodes, q, sign)) return std::nullopt;
+    const std::array<Vec3, 4> p{mesh.nodes[q[0]], mesh.nodes[q[1]], mesh.nodes[q[2]], mesh.nodes[q[3]]};
+    if (!(scaled_jacobian(p, up) > 0)) return std::nullopt;  // a corner turning the wrong way, or flat
   }
   mesh.template_tree = "S" + std::to_string(n);
   return mesh;

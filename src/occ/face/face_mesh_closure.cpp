@@ -68,8 +68,9 @@ std::string face_mesh_closure_problem(const ShapeIndex& index, int face, const s
     poll_cancellation(8);
     for (int k = 0; k < 4; ++k) uses.push_back(edge_key(global(q[k]), global(q[(k + 1) % 4])));
   }
-  // The sort of a large face's edges takes seconds: it looks at the cancel flag every
-  // kSortPoll comparisons (a count in the comparator, too cheap to see in its time).
+  // The sort of a large face's edges takes seconds (20 million keys at 5 million
+  // quads): it looks at the cancel flag through a count in the comparator, every
+  // kSortPoll comparisons.
   constexpr std::size_t kSortPoll = 1 << 10;
   std::size_t compared = 0;
   const auto before = [&compared](const EdgeKey& a, const EdgeKey& b) {

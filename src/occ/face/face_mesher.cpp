@@ -430,32 +430,14 @@ std::optional<std::pair<int, int>> tip_strip_tips(const FaceBoundary& b, const s
     if (std::abs(b.turn[k]) >= kStripTipTurn) tips.push_back(b.edge_start[k]);
   }
   const int count = static_cast<int>(b.nodes.size());
-  if (tips.size() != 2 || count < 6) return std::nullopt;
+  if (tips.size() != 2) return std::nullopt;
+  const int n = ((tips[1] - tips[0]) % count + count) % count;
+  if (2 * n != count || n < 3) return std::nullopt;
+  // The band's width where the strip's rows cross it: from a_i to b_i.
   const auto at = [&](int position) { return nodes[b.nodes[((position % count) + count) % count]]; };
-  // Each chain's points by their share of its length; the band's width at a point of
-  // one chain is its distance to the point at the same share of the other.
-  const auto chain = [&](int from, int segments, int step) {
-    std::vector<Vec3> points{at(from)};
-    std::vector<double> shares{0};
-    for (int i = 1; i <= segments; ++i) {
-      points.push_back(at(from + step * i));
-      shares.push_back(shares.back() + distance(points[i - 1], points[i]));
-    }
-    for (double& share : shares) share /= shares.back() > 0 ? shares.back() : 1;
-    return std::pair(points, shares);
-  };
-  const int along_a = ((tips[1] - tips[0]) % count + count) % count;
-  const auto [a, a_shares] = chain(tips[0], along_a, 1);
-  const auto [c, c_shares] = chain(tips[0], count - along_a, -1);
   double length = 0, widest = 0;
   for (int i = 0; i < count; ++i) length += distance(at(i), at(i + 1));
-  std::size_t j = 1;
-  for (std::size_t i = 1; i + 1 < a.size(); ++i) {
-    while (j + 1 < c.size() && c_shares[j] < a_shares[i]) ++j;
-    const double span = c_shares[j] - c_shares[j - 1];
-    const double t = span > 0 ? (a_shares[i] - c_shares[j - 1]) / span : 0.0;
-    widest = std::max(widest, distance(a[i], c[j - 1] + t * (c[j] - c[j - 1])));
-  }
+  for (int i = 1; i < n; ++i) widest = std::max(widest, distance(at(tips[0] + i), at(tips[0] - i)));
   if (widest > kStripWidth * length / count) return std::nullopt;
   return std::pair(tips[0], tips[1]);
 }

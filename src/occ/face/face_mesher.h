@@ -132,18 +132,16 @@ std::optional<FaceMeshResult> mesh_pole_sector(const TopoDS_Face& face, const Po
                                                const std::vector<Vec3>& nodes, const MeshOptions& options);
 
 // A thin face between two sharp tips meshed as the tip strip (core/templates/tip_strip.h)
-// in (u, v); nothing when tip_strip_tips finds none or the chains between the tips have
-// unequal counts (balance_narrow_bands makes them equal where it can).
+// in (u, v); nothing when tip_strip_tips finds none.
 std::optional<FaceMeshResult> mesh_face_tip_strip(const TopoDS_Face& face, const FaceBoundary& boundary,
                                                   const std::vector<Vec3>& nodes);
 
 // The loop positions of a tip strip's two tips, or nothing: a hole, a pole or a
 // degenerate edge, not exactly two CAD vertices turning by kStripTipTurn or more either
-// way (at a cusp the turn's sign is rounding noise), or a band wider anywhere than
-// kStripWidth mean segments (in space; the width at a node of one chain is its distance
-// to the point at the same share of the other chain's length): the strip's two rows
-// would be long and flat there, which the scaled Jacobian ranking the candidates does
-// not see. The chains' counts may differ.
+// way (at a cusp the turn's sign is rounding noise), chains between them of unequal
+// counts or under 3 segments, or a band wider than kStripWidth mean segments (in
+// space) where a row crosses it (a_i to b_i): the strip's two rows would be long and
+// flat there, which the scaled Jacobian ranking the candidates does not see.
 constexpr double kStripTipTurn = 2.0 * M_PI / 3;  // an angle of 60 degrees or less inside
 constexpr double kStripWidth = 3.0;
 std::optional<std::pair<int, int>> tip_strip_tips(const FaceBoundary& boundary, const std::vector<Vec3>& nodes);

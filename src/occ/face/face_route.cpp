@@ -345,7 +345,6 @@ const std::vector<FaceRoute>& face_routes() {
        },
        [](RouteContext& c, Candidates&) {
          if (auto strip = mesh_face_tip_strip(c.index.face(c.f), c.boundary, c.nodes)) {
-           strip->route = "tip strip";
            c.judged_smoothed.push_back(std::move(*strip));
          }
        },
@@ -464,6 +463,9 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
       route.propose(context, candidates);
     } catch (const InputError& e) {
       if (route.refusal == Refusal::noted || !candidates.best()) candidates.refused(e);
+    }
+    for (FaceMeshResult& layout : context.judged_smoothed) {
+      if (layout.route.empty()) layout.route = route.name;
     }
   }
   if (!candidates.best() && !context.judged_smoothed.empty()) {

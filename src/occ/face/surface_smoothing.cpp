@@ -110,10 +110,7 @@ void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<
 
   std::vector<Vec3> position;
   position.reserve(mesh.param.size());
-  for (NodeId id : mesh.boundary_nodes) {
-    poll_cancellation();
-    position.push_back(nodes[id]);
-  }
+  for (NodeId id : mesh.boundary_nodes) position.push_back(nodes[id]);
   position.insert(position.end(), mesh.interior.begin(), mesh.interior.end());
   if (mesh.normal.size() != mesh.param.size()) {  // not those check_on_surface measured
     mesh.normal.clear();
