@@ -22,7 +22,7 @@ namespace tquad {
 
 namespace {
 
-// The steepest ascents (of the worst corner, of the corners' sum): finite differences
+// The steepest ascents (of the worst corner, of the quads' sum, quad_value): finite differences
 // over kGradientStep of the shortest edge around the node (in the mesh coordinates);
 // corners within kActiveBand of the worst count as at it; steps from kLargestStep of
 // that edge down to kSmallestStep; at most kAscentIterations (kSumAscentIterations)
@@ -45,8 +45,8 @@ const std::array<Vec3, 8> kCompass = {Vec3{1, 0, 0},   Vec3{kHalfSqrt2, kHalfSqr
 constexpr int kStepsPerSize = 4;
 
 // A move must raise the worst corner around the node by kWorstGain of its value (at
-// least of kWorstGainFloor), or keep it and raise the sum of the corners there (up to
-// 12) by kSumGain: smaller gains cost passes and change nothing one sees. With any
+// least of kWorstGainFloor), or keep it and raise the quads' sum there (quad_value)
+// by kSumGain: smaller gains cost passes and change nothing one sees. With any
 // gain counted, the Laplacian moves rippled through whole O-grid disks (a large share
 // of a fine disk's nodes moving in every pass); a relative gain stops that (the smoothing
 // then costs less than the meshing) yet lets sliver quads (scaled Jacobian ~0.02)
@@ -77,6 +77,17 @@ double judged_corner(const QuadCorners& c, int j) { return std::min(c.jacobian[j
 // The corners of a quad whose angles its corner i's node decides: its own and its two
 // neighbours' (and, alike, the nodes that decide corner i's angle).
 std::array<int, 3> decided_by(int i) { return {i, (i + 1) % 4, (i + 3) % 4}; }
+
+// The sum the smoother raises, the worst held: over the quads around a node, each
+// quad's lowest corner as judged_corner judges them (the quad's scaled Jacobian, whose
+// mean is the mesh's mean quality) plus kCornerWeight times each corner the node
+// decides. The quads' values alone are what the mean measures, but they say nothing
+// of a quad's other corners, which the next move may need; with the corners alone, a
+// move could raise three fair corners while the quad's lowest fell.
+constexpr double kCornerWeight = 0.25;
+double quad_value(const QuadCorners& c) {
+  return std::min(std::min(judged_corner(c, 0), judged_corner(c, 1)), std::min(judged_corner(c, 2), judged_corner(c, 3)));
+}
 
 // The corners whose angle a node decides, summarized: the worst, their sum, and
 // whether a quad around it is collapsed.
@@ -327,10 +338,9 @@ class Smoother {
   LocalQuality local_quality(int n) const {
     LocalQuality local;
     for_each_quad_around(n, [&](const QuadCorners& c, int i) {
-      for (int j : decided_by(i)) {
-        local.worst = std::min(local.worst, judged_corner(c, j));
-        local.sum += judged_corner(c, j);
-      }
+      for (int j : decided_by(i)) local.worst = std::min(local.worst, judged_corner(c, j));
+      for (int j : decided_by(i)) local.sum += kCornerWeight * judged_corner(c, j);
+      local.sum += quad_value(c);
       local.collapsed += c.collapsed ? 1 : 0;
       local.edge_ratio = std::min(local.edge_ratio, c.edge_ratio);
     });
@@ -344,6 +354,13 @@ class Smoother {
     for_each_quad_around(n, [&](const QuadCorners& c, int i) {
       for (int j : decided_by(i)) values.push_back(judged_corner(c, j));
     });
+  }
+
+  // The corner of each quad around node n that node n does not decide (the one
+  // opposite it), in corner_values' quad order: constant while n moves.
+  void opposite_values(int n, std::vector<double>& values) const {
+    values.clear();
+    for_each_quad_around(n, [&](const QuadCorners& c, int i) { values.push_back(judged_corner(c, (i + 2) % 4)); });
   }
 
   // Node n placed at `param` for a measurement, then put back. False where the
@@ -454,15 +471,27 @@ class Smoother {
     });
   }
 
-  // Raises the sum of the corners around node n by steepest ascent, at most
+  // Raises the quads' sum around node n (quad_value) by steepest ascent, at most
   // kSumAscentIterations steps, each kept only as try_move allows (the worst corner
   // held), along the sum's gradient projected so that no corner at the worst falls.
   bool ascend_corner_sum(int n, LocalQuality& best) {
     return ascend(n, best, kSumAscentIterations, [&](double shortest) -> std::optional<AscentStep> {
+      // The gradient of the quads' values (quad_value): each quad's lowest corner's,
+      // none where that is the corner n does not decide.
+      opposite_values(n, opposite_);
       double along_first = 0, along_second = 0;
       for (std::size_t i = 0; i < values_.size(); ++i) {
-        along_first += gradient_first_[i];
-        along_second += gradient_second_[i];
+        along_first += kCornerWeight * gradient_first_[i];
+        along_second += kCornerWeight * gradient_second_[i];
+      }
+      for (std::size_t k = 0; k < opposite_.size() && 3 * k + 2 < values_.size(); ++k) {
+        std::size_t lowest = 3 * k;
+        for (std::size_t i = 3 * k + 1; i < 3 * k + 3; ++i) {
+          if (values_[i] < values_[lowest]) lowest = i;
+        }
+        if (opposite_[k] < values_[lowest]) continue;
+        along_first += gradient_first_[lowest];
+        along_second += gradient_second_[lowest];
       }
       // The worst corner must hold: the sum's gradient without its part that would
       // lower a corner at the worst (to first order).
@@ -580,7 +609,7 @@ class Smoother {
   SlottedLists quads_of_;  // the quads around each node
   std::vector<bool> movable_;  // empty: every node from fixed_ on
   // The ascents' buffers, kept to spare an allocation per node.
-  std::vector<double> values_, gradient_first_, gradient_second_;
+  std::vector<double> values_, gradient_first_, gradient_second_, opposite_;
   std::vector<Vec3> gradients_;
 };
 

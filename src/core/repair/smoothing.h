@@ -15,12 +15,13 @@
 // below cannot do. Then:
 //   - first the mean of its edge neighbours (Laplacian), whole, half or a quarter of
 //     the way; the move is kept if it raises the worst corner there, or keeps it and
-//     raises the sum of those corners;
+//     raises the sum of the quads' scaled Jacobians there (each quad's lowest corner,
+//     the mean's measure), with a quarter weight on each corner the node decides;
 //   - then, where the worst corner there is under search_below, the steepest ascent
 //     of that worst corner (max_min_ascent.h): gradients by finite differences, a
 //     step predicted to where another corner would become the worst, halved until
 //     the move is kept; where it is under good_enough only, the steepest ascent of
-//     the corners' sum, the worst held (the gradient projected so that no corner at
+//     that sum, the worst held (the gradient projected so that no corner at
 //     the worst falls).
 // Each corner is judged by the lower of its scaled Jacobian against the surface
 // normals and in its quad's own plane.
@@ -47,7 +48,7 @@ struct SmoothingOptions {
   // node whose neighbours are themselves badly placed).
   double search_below = 0.6;
   // Nodes whose corners around all reach this are left alone unless a neighbour moves;
-  // below it the sum of the corners is raised, the worst held. High, because fair
+  // below it that sum is raised, the worst held. High, because fair
   // corners between 0.8 and 0.95 are most of a mesh's corners: raising them lifts the
   // mean of nearly every part, for a fifth more smoothing time.
   double good_enough = 0.95;
