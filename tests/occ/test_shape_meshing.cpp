@@ -1046,6 +1046,58 @@ void expect_corpus_part_face(const std::string& file, int face, const std::strin
   fs::remove_all(folder);
 }
 
+TEST(ShapeMeshing, SmoothedNodesStayOnTheirFaces) {
+  // SFU1605-200.step at D/25: a ball screw whose thread faces are thin helical
+  // B-spline bands. Smoothing them moved nodes past the bands' sides in (u, v),
+  // where the B-spline is extrapolated: off the face (up to 0.2 mm off its surface)
+  // with sound corners, so no measure of the quads saw it. Every node of every
+  // meshed B-spline face must lie on its surface, where it projects inside the
+  // face's (u, v) box (the margins are for boundary nodes, placed on edges within
+  // their tolerance).
+  const fs::path archive = fs::path(TQUAD_SHARED_CAD_DIR) / ".." / "corpus" / "freecad-library-119.tar.xz";
+  if (!fs::exists(archive)) GTEST_SKIP() << "no " << archive << " (the corpus is not shipped)";
+  const fs::path folder = fs::temp_directory_path() / ("tquad_corpus_box_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  const std::string file = "SFU1605-200.step";
+  const std::string command = "tar -xJf '" + archive.string() + "' -C '" + folder.string() + "' 'parts/" + file + "'";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  const TopoDS_Shape shape = read_shape((folder / "parts" / file).string());
+  fs::remove_all(folder);
+  ShapeMeshOptions options;
+  options.keep_going = true;
+  options.size = diagonal(shape) / 25;
+  const ShapeMeshResult result = mesh_shape(shape, options);
+  const ShapeIndex index(shape);
+  int checked = 0;
+  for (const FaceMesh& f : result.mesh.faces) {
+    const TopoDS_Face& face = index.face(f.face);
+    const BRepAdaptor_Surface adaptor(face);
+    if (adaptor.GetType() != GeomAbs_BSplineSurface || adaptor.IsUPeriodic() || adaptor.IsVPeriodic()) continue;
+    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    const double du = 1e-4 * (u1 - u0), dv = 1e-4 * (v1 - v0);
+    TopLoc_Location location;
+    ShapeAnalysis_Surface surface(BRep_Tool::Surface(face, location));
+    const gp_Trsf to_local = location.Transformation().Inverted();
+    const double off = std::max(1e-6 * diagonal(shape), 2 * std::max(BRep_Tool::MaxTolerance(face, TopAbs_EDGE),
+                                                                       BRep_Tool::MaxTolerance(face, TopAbs_VERTEX)));
+    std::set<NodeId> nodes;
+    for (std::int64_t k = f.first_quad; k < f.first_quad + f.quad_count; ++k) {
+      nodes.insert(result.mesh.quads[k].begin(), result.mesh.quads[k].end());
+    }
+    for (NodeId n : nodes) {
+      const Vec3& p = result.mesh.nodes[n];
+      const gp_Pnt2d uv = surface.ValueOfUV(gp_Pnt(p.x, p.y, p.z).Transformed(to_local), 1e-7);
+      EXPECT_LE(surface.Gap(), off) << "face " << f.face << " node " << n << " off its surface";
+      EXPECT_TRUE(uv.X() >= u0 - du && uv.X() <= u1 + du && uv.Y() >= v0 - dv && uv.Y() <= v1 + dv)
+          << "face " << f.face << " node " << n << " at (u, v) (" << uv.X() << ", " << uv.Y() << "), the face's box ["
+          << u0 << ", " << u1 << "] x [" << v0 << ", " << v1 << "]";
+    }
+    ++checked;
+  }
+  EXPECT_GT(checked, 10) << "the part's B-spline faces";
+}
+
 TEST(ShapeMeshing, AThinRingIsBalancedAgainAfterABandsBalance) {
   // GT2Pulley.stp face 54: a circle of radius 1.25 around a hexagonal socket of
   // circumradius 1.155, the circle shared with a chamfer band around a seam. The

@@ -119,7 +119,21 @@ void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<
       mesh.normal.push_back(outer_normal(surface, reversed, to_uv(p)));
     }
   }
+  // A node stays inside the box of its face's boundary nodes in the mesh coordinates
+  // (the interior of a loop lies within the loop's box): beyond the face a B-spline
+  // surface is extrapolated, so a node there lies off the surface the face is cut
+  // from, which no corner measure sees (its normal is the extrapolation's).
+  Vec3 low = mesh.param.front(), high = mesh.param.front();
+  for (std::size_t i = 1; i < fixed; ++i) {
+    low = {std::min(low.x, mesh.param[i].x), std::min(low.y, mesh.param[i].y), 0.0};
+    high = {std::max(high.x, mesh.param[i].x), std::max(high.y, mesh.param[i].y), 0.0};
+  }
+  const double u_margin = 1e-6 * (high.x - low.x), v_margin = 1e-6 * (high.y - low.y);
+  const auto in_boundary_box = [&](const Vec3& p) {
+    return p.x >= low.x - u_margin && p.x <= high.x + u_margin && p.y >= low.y - v_margin && p.y <= high.y + v_margin;
+  };
   const PlaceNode place = [&](int, const Vec3& p, Vec3& at, Vec3& n) {
+    if (!in_boundary_box(p)) return false;
     const Vec3 uv = to_uv(p);
     n = outer_normal(surface, reversed, uv, at);
     return norm(n) > 0;
