@@ -52,6 +52,9 @@ runs, so that each process has a core, and its own default of all cores with one
     its smallest corner area |e1 x e2| under 1/1000 of its largest (the Jacobian ratio: a
     triangle in effect, whatever its angles); "worst" is the smaller of the two
     measures' minimum;
+  * thin faces: a face whose width, 2 x its quads' area / its mesh's boundary length,
+    is under THIN_FACE_WIDTH times the size; its quads are counted, and those under 0.2
+    (a quad spans such a strip, and leans unless its two sides' nodes face each other);
   * the normals' agreement: every mesh edge two quads share is counted, and those the two
     quads run the same way (their normals disagree there: a shell element's top and
     bottom swap across it);
@@ -108,6 +111,7 @@ MISMATCH_SHARE = 0.10     # more nodes off their faces than this: the face numbe
 NEWTON_STEPS = 8          # Gauss-Newton steps of a projection from a neighbour's parameters
 CUSP_DEGREES = 1.0        # tangents closer than this to one line: a cusp, told by chords
 BOUND_MARGIN = 0.005      # slack of the "worst >= bound" comparison
+THIN_FACE_WIDTH = 0.25    # a face narrower than this times the size (2 area / perimeter) is thin
 REFUSAL_CODES = ("cannot_mesh", "inverted_quads", "too_coarse", "not_supported", "damaged",
                  "internal")
 
@@ -510,6 +514,30 @@ def collapsed_quads(points, quads):
     return ~(low >= COLLAPSED_AREA_RATIO * high) | (high == 0)
 
 
+def thin_face_quads(points, quads, quad_face, size):
+    """Per quad, whether its face is thin: the face's width, taken as 2 x its quads'
+    area / the length of its mesh's boundary (a strip's width, a disk's radius), under
+    THIN_FACE_WIDTH times the size. Across a strip that thin a quad spans the strip,
+    and leans unless the nodes of its two sides face each other."""
+    if not len(quads) or not size:
+        return np.zeros(len(quads), dtype=bool)
+    p = points[quads]
+    area = 0.5 * np.linalg.norm(np.cross(p[:, 2] - p[:, 0], p[:, 3] - p[:, 1]), axis=1)
+    faces, face_of = np.unique(quad_face, return_inverse=True)
+    face_area = np.bincount(face_of, weights=area, minlength=len(faces))
+    a = quads.reshape(-1)
+    b = np.roll(quads, -1, axis=1).reshape(-1)
+    edge_face = np.repeat(face_of, 4)
+    n = int(quads.max()) + 1
+    keys = (edge_face * n + np.minimum(a, b)) * n + np.maximum(a, b)
+    _, first, counts = np.unique(keys, return_index=True, return_counts=True)
+    edge = first[counts == 1]                           # used once in its face: its boundary
+    length = np.linalg.norm(points[a[edge]] - points[b[edge]], axis=1)
+    perimeter = np.bincount(edge_face[edge], weights=length, minlength=len(faces))
+    width = np.where(perimeter > 0, 2 * face_area / np.where(perimeter > 0, perimeter, 1), np.inf)
+    return (width < THIN_FACE_WIDTH * size)[face_of]
+
+
 def same_way_edges(quads):
     """(shared, same_way): mesh edges two or more quads share, and the quad edges that
     run along a shared edge the way another quad's already does."""
@@ -523,11 +551,12 @@ def same_way_edges(quads):
     return int((undirected >= 2).sum()), int((directed - 1).sum())
 
 
-def measure_mesh(path, shape, diagonal, surface_check, singular_sine, tquad_faces):
+def measure_mesh(path, shape, diagonal, surface_check, singular_sine, tquad_faces, size):
     """Measures every quad of a mesh JSON by both normals (the module docstring);
     tquad_faces is the number of faces tquad's report counts (meshed, refused and absorbed).
 
-    Returns a dict: quads, bad, collapsed (counted in bad too), under_01, under_02, worst_own / mean_own, worst_surface /
+    Returns a dict: quads, bad, collapsed (counted in bad too), under_01, under_02,
+    thin_quads and thin_under_02 (those in thin faces, thin_face_quads at `size`), worst_own / mean_own, worst_surface /
     mean_surface (None when not measured), worst, surface ("measured", "not asked",
     "face order mismatch", or why not), off_surface_nodes, off_surface_faces, bad_faces
     {face: count}, projected_nodes and seconds (reading, own, surface)."""
@@ -592,6 +621,8 @@ def measure_mesh(path, shape, diagonal, surface_check, singular_sine, tquad_face
     collapsed = collapsed_quads(points, quads)
     bad = (both <= BAD_CORNER) | collapsed
     result["shared_edges"], result["same_way_edges"] = same_way_edges(quads)
+    thin = thin_face_quads(points, quads, quad_face, size)
+    result["thin_quads"], result["thin_under_02"] = int(thin.sum()), int((thin & (both < 0.2)).sum())
     result.update({
         "bad": int(bad.sum()), "collapsed": int(collapsed.sum()), "under_01": int((both < 0.1).sum()), "under_02": int((both < 0.2).sum()),
         "worst_own": float(own_min.min()) if len(quads) else None,
@@ -758,7 +789,7 @@ def part_job(spec):
             try:
                 run["measure"] = measure_mesh(mesh_path(divisor), shape, part["diagonal"], check,
                                               spec["singular_sine"],
-                                              faces_of(tq))
+                                              faces_of(tq), size)
             except Exception as error:
                 run["measure"] = {"error": "%s: %s" % (type(error).__name__, str(error)[:300])}
             if not spec["keep_meshes"]:
@@ -1134,6 +1165,13 @@ def summary_lines(results, keys, gmsh_keys):
         runs = [p for p in results if tquad_ok(p["runs"].get(key)) and "shared_edges" in p["runs"][key]["measure"]]
         same = [(p["name"], p["runs"][key]["measure"]["same_way_edges"]) for p in runs
                 if p["runs"][key]["measure"]["same_way_edges"]]
+        thin = sum(p["runs"][key]["measure"].get("thin_quads", 0) for p in results if tquad_ok(p["runs"].get(key)))
+        poor = sum(p["runs"][key]["measure"].get("under_02", 0) for p in results if tquad_ok(p["runs"].get(key)))
+        thin_poor = sum(p["runs"][key]["measure"].get("thin_under_02", 0) for p in results
+                        if tquad_ok(p["runs"].get(key)))
+        out.append("D/%s thin faces (2 x area / perimeter under %g of the size): %d quads (%s of all), %d of the "
+                   "%d quads under 0.2 (%s)."
+                   % (key, THIN_FACE_WIDTH, thin, share(thin, quads), thin_poor, poor, share(thin_poor, poor)))
         out.append("D/%s normals: %d shared mesh edges in %d parts, %d run the same way by two quads "
                    "(normals that disagree)%s."
                    % (key, sum(p["runs"][key]["measure"]["shared_edges"] for p in runs), len(runs),
