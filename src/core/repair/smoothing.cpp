@@ -338,8 +338,10 @@ class Smoother {
   LocalQuality local_quality(int n) const {
     LocalQuality local;
     for_each_quad_around(n, [&](const QuadCorners& c, int i) {
-      for (int j : decided_by(i)) local.worst = std::min(local.worst, judged_corner(c, j));
-      for (int j : decided_by(i)) local.sum += kCornerWeight * judged_corner(c, j);
+      for (int j : decided_by(i)) {
+        local.worst = std::min(local.worst, judged_corner(c, j));
+        local.sum += kCornerWeight * judged_corner(c, j);
+      }
       local.sum += quad_value(c);
       local.collapsed += c.collapsed ? 1 : 0;
       local.edge_ratio = std::min(local.edge_ratio, c.edge_ratio);
@@ -347,20 +349,16 @@ class Smoother {
     return local;
   }
 
-  // The corners node n decides (judged_corner), always in the same order, into
-  // `values`.
-  void corner_values(int n, std::vector<double>& values) const {
+  // The corners node n decides (judged_corner), always in the same order, three a
+  // quad, into `values`; and, when given, into `opposite` the corner of each quad
+  // that node n does not decide (the one opposite it), constant while n moves.
+  void corner_values(int n, std::vector<double>& values, std::vector<double>* opposite = nullptr) const {
     values.clear();
+    if (opposite) opposite->clear();
     for_each_quad_around(n, [&](const QuadCorners& c, int i) {
       for (int j : decided_by(i)) values.push_back(judged_corner(c, j));
+      if (opposite) opposite->push_back(judged_corner(c, (i + 2) % 4));
     });
-  }
-
-  // The corner of each quad around node n that node n does not decide (the one
-  // opposite it), in corner_values' quad order: constant while n moves.
-  void opposite_values(int n, std::vector<double>& values) const {
-    values.clear();
-    for_each_quad_around(n, [&](const QuadCorners& c, int i) { values.push_back(judged_corner(c, (i + 2) % 4)); });
   }
 
   // Node n placed at `param` for a measurement, then put back. False where the
@@ -396,7 +394,7 @@ class Smoother {
   // False where the surface cannot take the displaced node.
   bool corner_gradients(int n, double h, const LocalFrame& frame) {
     const Vec3 start = nodes_.param(n);
-    corner_values(n, values_);
+    corner_values(n, values_, &opposite_);
     if (!corner_values_at(n, start + h * frame.first, gradient_first_) ||
         !corner_values_at(n, start + h * frame.second, gradient_second_) ||
         gradient_first_.size() != values_.size() || gradient_second_.size() != values_.size()) {
@@ -477,14 +475,13 @@ class Smoother {
   bool ascend_corner_sum(int n, LocalQuality& best) {
     return ascend(n, best, kSumAscentIterations, [&](double shortest) -> std::optional<AscentStep> {
       // The gradient of the quads' values (quad_value): each quad's lowest corner's,
-      // none where that is the corner n does not decide.
-      opposite_values(n, opposite_);
+      // none where that is the corner n does not decide (opposite_, corner_gradients).
       double along_first = 0, along_second = 0;
       for (std::size_t i = 0; i < values_.size(); ++i) {
         along_first += kCornerWeight * gradient_first_[i];
         along_second += kCornerWeight * gradient_second_[i];
       }
-      for (std::size_t k = 0; k < opposite_.size() && 3 * k + 2 < values_.size(); ++k) {
+      for (std::size_t k = 0; k < opposite_.size(); ++k) {
         std::size_t lowest = 3 * k;
         for (std::size_t i = 3 * k + 1; i < 3 * k + 3; ++i) {
           if (values_[i] < values_[lowest]) lowest = i;

@@ -84,9 +84,9 @@ constexpr double kGoodEnoughCorner = 0.3;
 // is for (where the variant ranked first before smoothing ends below another after
 // it) are lower.
 constexpr double kSmoothVariantsBelow = 0.25;
-// ... first with this many passes each (the smoother's default is SmoothingOptions::passes), and only the
-// best of them in full: smoothing every variant of a large decomposed face in full
-// took many times its meshing.
+// ... first with this many passes each (fewer than SmoothingOptions::passes), and
+// only the best of them in full: smoothing every variant of a large decomposed face in
+// full took many times its meshing.
 constexpr SmoothingOptions kVariantLook{2};
 
 // --corners best screens its corner sets on the face's (u, v) loop, where a template

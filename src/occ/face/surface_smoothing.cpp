@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "core/geometry/box3.h"
 #include "core/repair/doublets.h"
 #include "core/repair/flat_corner_turns.h"
 #include "core/repair/sharp_corner_flips.h"
@@ -123,14 +124,11 @@ void smooth_face_mesh(const TopoDS_Face& face, bool has_seam, const std::vector<
   // (the interior of a loop lies within the loop's box): beyond the face a B-spline
   // surface is extrapolated, so a node there lies off the surface the face is cut
   // from, which no corner measure sees (its normal is the extrapolation's).
-  Vec3 low = mesh.param.front(), high = mesh.param.front();
-  for (std::size_t i = 1; i < fixed; ++i) {
-    low = {std::min(low.x, mesh.param[i].x), std::min(low.y, mesh.param[i].y), 0.0};
-    high = {std::max(high.x, mesh.param[i].x), std::max(high.y, mesh.param[i].y), 0.0};
-  }
-  const double u_margin = 1e-6 * (high.x - low.x), v_margin = 1e-6 * (high.y - low.y);
+  const Box3 box = bounding_box(mesh.param.begin(), mesh.param.begin() + static_cast<std::ptrdiff_t>(fixed));
+  const Vec3 margin = 1e-6 * box.extent();
   const auto in_boundary_box = [&](const Vec3& p) {
-    return p.x >= low.x - u_margin && p.x <= high.x + u_margin && p.y >= low.y - v_margin && p.y <= high.y + v_margin;
+    return p.x >= box.low.x - margin.x && p.x <= box.high.x + margin.x && p.y >= box.low.y - margin.y &&
+           p.y <= box.high.y + margin.y;
   };
   const PlaceNode place = [&](int, const Vec3& p, Vec3& at, Vec3& n) {
     if (!in_boundary_box(p)) return false;
