@@ -11,6 +11,7 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
@@ -886,6 +887,45 @@ TEST(ShapeMeshing, WasherHalvesShareTheRingBalanceEvenly) {
   EXPECT_EQ(result.inverted, 0);
   const double worst = *std::min_element(result.mesh.scaled_jacobian.begin(), result.mesh.scaled_jacobian.end());
   EXPECT_GT(worst, 0.8);
+}
+
+TEST(ShapeMeshing, RingBalanceKeepsLongEdgesNearTheirGoals) {
+  // A frame 2 wide around a 96 x 16 opening, its outer rim notched ten times (1 wide,
+  // 0.5 deep) along the top: at size 2 each notch adds three one-segment edges, and
+  // the outer rim's total is some 30 over the inner one's. Every step of the ring
+  // balance that lowers the bottom edge (goal 50) costs the same, so it used to give
+  // up nearly all its segments alone; it may now fall to half its goal, and the
+  // other edges take the rest.
+  BRepBuilderAPI_MakePolygon outer;
+  outer.Add(gp_Pnt(0, 0, 0));
+  outer.Add(gp_Pnt(100, 0, 0));
+  outer.Add(gp_Pnt(100, 20, 0));
+  for (int k = 9; k >= 0; --k) {
+    const double x = 5 + 10 * k;
+    outer.Add(gp_Pnt(x + 0.5, 20, 0));
+    outer.Add(gp_Pnt(x + 0.5, 19.5, 0));
+    outer.Add(gp_Pnt(x - 0.5, 19.5, 0));
+    outer.Add(gp_Pnt(x - 0.5, 20, 0));
+  }
+  outer.Add(gp_Pnt(0, 20, 0));
+  outer.Close();
+  BRepBuilderAPI_MakePolygon inner(gp_Pnt(2, 2, 0), gp_Pnt(2, 18, 0), gp_Pnt(98, 18, 0), gp_Pnt(98, 2, 0), true);
+  BRepBuilderAPI_MakeFace face(outer.Wire());
+  face.Add(inner.Wire());
+  ASSERT_TRUE(face.IsDone());
+  ShapeMeshOptions options;
+  options.size = 2.0;
+  options.keep_going = true;
+  const ShapeMeshResult result = mesh_shape(face.Face(), options);
+  const ShapeIndex index(face.Face());
+  ASSERT_FALSE(result.changes.empty());
+  for (const IntervalChange& change : result.changes) {
+    const BRepAdaptor_Curve curve(index.edge(change.edge));
+    const double goal = std::max(1.0, GCPnts_AbscissaPoint::Length(curve) / options.size);
+    EXPECT_GE(2.0 * change.to, goal - 1e-9) << "edge " << change.edge << " from " << change.from << " to " << change.to;
+  }
+  ASSERT_EQ(result.mesh.faces.size(), 1u);
+  EXPECT_EQ(result.inverted, 0);
 }
 
 // A disk of radius 5, 0.05 thick, with six thin bars standing across its top rim:

@@ -88,6 +88,7 @@ int balance_rings(FaceWireEdges& face_wires, const std::vector<char>& meshed, co
     for (int step = 0; step < kMaxSteps && gap != 0; ++step) {
       // The unit and direction that shrink |gap| at the least cost.
       int best_unit = -1, best_direction = 0;
+      int best_strays = 0;
       double best_cost = INFINITY, best_tie_break = INFINITY;
       std::vector<int> candidates;
       for (int e : a) candidates.push_back(unit_of[e]);
@@ -104,15 +105,21 @@ int balance_rings(FaceWireEdges& face_wires, const std::vector<char>& meshed, co
         const int direction = (gap > 0) == (effect > 0) ? -1 : 1;
         if (std::abs(gap + direction * effect) >= std::abs(gap)) continue;
         double cost = 0, tie_break = 0;
+        int strays = 0;
         bool allowed = true;
         for (int e : units[u]) {
           const int n = segments[e] + direction;
           allowed = allowed && n >= std::max(1, floor[e]);
+          strays += strays_from_goal(segments[e], n, goal[e]) ? 1 : 0;
           cost += count_cost(n, goal[e]) - count_cost(segments[e], goal[e]);
           tie_break += squared_cost(n, goal[e]) - squared_cost(segments[e], goal[e]);
         }
-        const bool cheaper = cost < best_cost - 1e-12 || (cost <= best_cost + 1e-12 && tie_break < best_tie_break - 1e-12);
+        const bool cheaper =
+            best_unit < 0 || strays < best_strays ||
+            (strays == best_strays &&
+             (cost < best_cost - 1e-12 || (cost <= best_cost + 1e-12 && tie_break < best_tie_break - 1e-12)));
         if (allowed && cheaper) {
+          best_strays = strays;
           best_cost = cost;
           best_tie_break = tie_break;
           best_unit = u;

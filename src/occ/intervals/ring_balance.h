@@ -10,7 +10,8 @@
 // Totals change by whole units, the chains (which keeps their faces mapped) or free
 // edges: each step takes the unit that closes the gap at the least cost
 // (count_cost; between equal costs, the least square of it, so that the steps spread
-// over the units), never below an edge's floor.
+// over the units), never below an edge's floor, and first the units whose edges all
+// stay near their goals (strays_from_goal).
 #pragma once
 
 #include <vector>
