@@ -1147,6 +1147,15 @@ TEST(ShapeMeshing, AThinRingIsBalancedAgainAfterABandsBalance) {
   expect_corpus_part_face("GT2Pulley.stp", 54, "R", 0.3);
 }
 
+TEST(ShapeMeshing, ABandWithAPoleAtACornerIsBalancedAndMapped) {
+  // DC-Motor_3-6V.step face 93: a B-spline band 0.15 to 0.3 wide and 4.5 long whose
+  // surface collapses at one corner (a degenerate edge there). Left out of the band
+  // balance for that edge, its long sides kept unequal counts, and a transition one
+  // quad across left two of its 7 quads inverted: the face was refused. The pole is
+  // one node of the loop, a corner like any other; balanced, the band is a mapped grid.
+  expect_corpus_part_face("DC-Motor_3-6V.step", 93, "T0", 0.5);
+}
+
 TEST(ShapeMeshing, AThinRingsFacingArcsKeepEqualCounts) {
   // SampleCrankshaft4A.stp face 103: a flat ring 3.2 wide between radii 25.4 and
   // 28.6, each circle two half arcs, the outer ones shared with a cylinder. At the

@@ -218,7 +218,7 @@ int align_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshed,
     std::vector<int> corners;
     try {
       b = face_boundary(index, f, edges, nodes);
-      if (b.inner_wires > 0 || b.has_degenerate_edge) continue;
+      if (b.inner_wires > 0) continue;
       corners = choose_face_corners(b, f, {}, false);
     } catch (...) {
       continue;  // the face's own meshing says what is wrong

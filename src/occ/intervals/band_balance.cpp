@@ -64,7 +64,7 @@ int balance_narrow_bands(const ShapeIndex& index, const std::vector<char>& meshe
     std::vector<int> corners;
     try {
       b = face_boundary(index, f, edges, nodes);
-      if (b.inner_wires > 0 || b.has_degenerate_edge) continue;
+      if (b.inner_wires > 0) continue;
       if (std::find(b.is_seam.begin(), b.is_seam.end(), 1) != b.is_seam.end()) continue;
       corners = choose_face_corners(b, f, {}, false);
     } catch (...) {
