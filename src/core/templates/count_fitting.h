@@ -76,16 +76,16 @@ class CurveSets {
 constexpr double kChainRatio = 1.5;
 inline bool near_enough_to_chain(double a, double b) { return std::max(a, b) <= kChainRatio * std::min(a, b); }
 
-// A balance of a ring's rim totals (ring_balance.h) lowers a
-// curve's count under its goal over this ratio (and by over one segment) only when
-// no other step closes the gap. Cost per step (count_cost) is the same all the way
-// down, so one long edge would otherwise give up nearly all its segments to make up
-// for the short edges of the rim beside it (each at least one segment), and the face
-// on its other side would be meshed along it in one stretched segment. Raising a count
-// only refines the faces along the curve, and is not held back.
+// A balance of a ring's rim totals (ring_balance.h) takes a curve's count under
+// 1 / kStrayRatio of its goal (and a segment or more under it) only when no other
+// step closes the gap. Cost per step (count_cost) is the same all the way down, so
+// one long edge would otherwise give up nearly all its segments to make up for the
+// short edges of the rim beside it (each at least one segment), and the face on its
+// other side would be meshed along it in one stretched segment. Raising a count only
+// refines the faces along the curve, and is not held back.
 constexpr double kStrayRatio = 2.0;
 
-// Whether lowering a curve's count from `from` to `to` strays under its goal (above).
+// Whether changing a curve's count from `from` to `to` lowers it that far (above).
 inline bool strays_from_goal(int from, int to, double goal) {
   return to < from && goal - to >= 1.0 && kStrayRatio * to < goal;
 }
