@@ -305,6 +305,7 @@ int run(const MeshCommand& command, std::ostream& out, std::ostream& err) {
       report["refinement_rounds"] = shape_result.refinement_rounds;
       report["refused_per_round"] = shape_result.refused_per_round;
       report["kept_round"] = shape_result.kept_round;
+      report["higher_mean_faces"] = shape_result.higher_mean_faces;
       report["off_surface_quads"] = shape_result.off_surface;
       nlohmann::ordered_json bad_faces = nlohmann::ordered_json::array();
       for (const auto& [face, count] : shape_result.bad_quad_faces) bad_faces.push_back({{"face", face}, {"quads", count}});

@@ -222,6 +222,9 @@ class ShapeMeshContext {
       result_.kept_round = best->round;
       restore_round(std::move(*best));
     }
+    // Once every face is meshed (the part's worst corner known), in face order: the
+    // same for any number of threads.
+    result_.higher_mean_faces = take_higher_means(outcomes_, meshed_);
     report_intervals();
     stage("assemble", [&] { assemble(); });
     if (options_.order == 2) stage("mid-edge nodes", [&] { add_middles(); });

@@ -132,3 +132,77 @@ TEST(FaceRoutes, AChamferedHexHeadsConeFacesAreTipStrips) {
 
 }  // namespace
 }  // namespace tquad
+
+namespace tquad {
+namespace {
+
+// A face mesh as the chooser sees it: its quads' scaled Jacobians and their lowest.
+FaceMeshResult measured(std::vector<double> jacobians) {
+  FaceMeshResult m;
+  m.quads.assign(jacobians.size(), Quad{0, 1, 2, 3});
+  m.worst_corner = *std::min_element(jacobians.begin(), jacobians.end());
+  m.scaled_jacobian = std::move(jacobians);
+  return m;
+}
+
+TEST(FaceRoutes, AboveAFairWorstCornerTheMeanDecides) {
+  const FaceMeshResult fair_worse_mean = measured({0.6, 0.7, 0.7});
+  const FaceMeshResult fair_better_mean = measured({0.35, 0.95, 0.95});
+  EXPECT_TRUE(better_worst_then_mean(fair_better_mean, fair_worse_mean));
+  EXPECT_FALSE(better_worst_then_mean(fair_worse_mean, fair_better_mean));
+  // Below kFineWorstCorner the worst corner decides, whatever the means.
+  const FaceMeshResult poor_better_mean = measured({kFineWorstCorner - 0.05, 0.99, 0.99});
+  EXPECT_TRUE(better_worst_then_mean(fair_worse_mean, poor_better_mean));
+  EXPECT_FALSE(better_worst_then_mean(poor_better_mean, fair_worse_mean));
+  // A bad quad loses to none, fair or not.
+  FaceMeshResult bad = measured({0.9, 0.95});
+  bad.bad = 1;
+  EXPECT_TRUE(better_worst_then_mean(poor_better_mean, bad));
+}
+
+TEST(FaceRoutes, AFaceTakesItsHigherMeanMeshOnlyWhereThePartsWorstHolds) {
+  std::vector<FaceOutcome> outcomes(5);
+  for (FaceOutcome& o : outcomes) o.ok = true;
+  // Face 0 holds the part's worst corner, 0.2, and most of its quads (part mean 0.82).
+  outcomes[0].mesh = measured({0.2, 0.99, 0.99, 0.99, 0.99, 0.99, 0.99, 0.99, 0.99, 0.99, 0.99, 0.99, 0.99});
+  // Face 1: its alternative stays above 0.2 and raises the part's mean: taken.
+  outcomes[1].mesh = measured({0.5, 0.6});
+  outcomes[1].higher_mean = measured({0.25, 0.95, 0.95});
+  // Face 2: its alternative would make a new worst element for the part: not taken.
+  outcomes[2].mesh = measured({0.5, 0.6});
+  outcomes[2].higher_mean = measured({0.1, 0.99, 0.99, 0.99});
+  // Face 3: a higher mean of its own (0.645 against 0.625), but its two quads more
+  // add 1.33 to the sum, 0.665 each, under the part's mean: it would fall, not taken.
+  outcomes[3].mesh = measured({0.95, 0.3});
+  outcomes[3].higher_mean = measured({0.28, 0.7, 0.7, 0.9});
+  // Face 4 is not part of the mesh (refused, or not asked for): left as it is.
+  outcomes[4].mesh = measured({0.5, 0.6});
+  outcomes[4].higher_mean = measured({0.3, 0.95});
+  const std::vector<char> meshed{1, 1, 1, 1, 0};
+
+  const auto part = [&] {
+    double sum = 0, worst = 1;
+    long long count = 0;
+    for (std::size_t f = 0; f < outcomes.size(); ++f) {
+      if (!meshed[f]) continue;
+      for (double v : outcomes[f].mesh.scaled_jacobian) sum += v;
+      count += static_cast<long long>(outcomes[f].mesh.scaled_jacobian.size());
+      worst = std::min(worst, outcomes[f].mesh.worst_corner);
+    }
+    return std::pair<double, double>(worst, sum / static_cast<double>(count));
+  };
+  const auto [worst_before, mean_before] = part();
+  EXPECT_EQ(take_higher_means(outcomes, meshed), 1);
+  const auto [worst_after, mean_after] = part();
+  EXPECT_EQ(worst_after, worst_before);
+  EXPECT_GT(mean_after, mean_before);
+  EXPECT_EQ(outcomes[1].mesh.scaled_jacobian.size(), 3u);
+  EXPECT_EQ(outcomes[2].mesh.worst_corner, 0.5);
+  EXPECT_EQ(outcomes[3].mesh.scaled_jacobian.size(), 2u);
+  EXPECT_EQ(outcomes[4].mesh.scaled_jacobian.size(), 2u);
+  // Every alternative of a meshed face is dropped once decided.
+  for (int f = 0; f < 4; ++f) EXPECT_FALSE(outcomes[f].higher_mean.has_value()) << "face " << f;
+}
+
+}  // namespace
+}  // namespace tquad

@@ -352,8 +352,9 @@ double mean_scaled_jacobian(const FaceMeshResult& m) {
 }
 
 bool better_worst_then_mean(const FaceMeshResult& a, const FaceMeshResult& b) {
+  const bool both_fine = a.worst_corner >= kFineWorstCorner && b.worst_corner >= kFineWorstCorner;
   if (a.bad != b.bad || a.inverted != b.inverted || a.collapsed != b.collapsed ||
-      std::abs(a.worst_corner - b.worst_corner) > 1e-9) {
+      (!both_fine && std::abs(a.worst_corner - b.worst_corner) > 1e-9)) {
     return better_face_mesh(a, b);
   }
   return mean_scaled_jacobian(a) > mean_scaled_jacobian(b);

@@ -99,8 +99,14 @@ bool better_face_mesh(const FaceMeshResult& a, const FaceMeshResult& b);
 // The mean of a face mesh's per-quad scaled Jacobian (0 for no quad).
 double mean_scaled_jacobian(const FaceMeshResult& m);
 
-// better_face_mesh, and at the same worst corner (within 1e-9) the higher mean: the
-// order --corners best keeps ("the best worst element, then the best mean").
+// A worst corner at or above this (a scaled Jacobian of 0.3: every angle between
+// about 17.5 and 162.5 degrees) is fair; between two fair meshes the mean decides.
+inline constexpr double kFineWorstCorner = 0.3;
+// better_face_mesh, except that between two meshes whose worst corners are both fair
+// (kFineWorstCorner), or equal within 1e-9, the higher mean wins: the order the
+// smoothed candidates and --corners best are ranked by. Raising a fair worst corner
+// further at the mean's cost gives elements no solver needs, where the mean is
+// what most of the part's elements are.
 bool better_worst_then_mean(const FaceMeshResult& a, const FaceMeshResult& b);
 
 // Quads come counter-clockwise around the face's outer normal. Throws InputError with

@@ -135,11 +135,22 @@ struct NaturalChoice {
   std::vector<FaceMeshResult> other_decompositions;
   std::optional<FaceMeshResult> patches_searched;
   std::vector<FaceMeshResult> judged_smoothed;  // RouteContext::judged_smoothed
+  // Of the smoothed meshes that lost to `best`, the one of highest mean with no bad
+  // quad (FaceOutcome::higher_mean).
+  std::optional<FaceMeshResult> higher_mean;
 };
 
+// Whether `loser`, a smoothed mesh that did not win, is kept as the face's higher-mean
+// alternative: no quad unfit for analysis, and a higher mean than the one kept so far.
+void offer_higher_mean(FaceMeshResult&& loser, std::optional<FaceMeshResult>& kept) {
+  if (loser.bad > 0 || loser.inverted > 0 || loser.collapsed > 0 || loser.quads.empty()) return;
+  if (kept && mean_scaled_jacobian(loser) <= mean_scaled_jacobian(*kept)) return;
+  kept = std::move(loser);
+}
+
 // The natural choice smoothed (when `smooth`): its best mesh, or, where smoothing
-// reorders them, another variant or the searched patches (the worst corner, then the
-// mean).
+// reorders them, another variant or the searched patches (better_worst_then_mean).
+// The smoothed meshes that lose are offered as the higher-mean alternative.
 FaceMeshResult settle_natural_choice(const TopoDS_Face& face, bool seam, const std::vector<Vec3>& nodes, bool smooth,
                                      NaturalChoice& choice) {
   FaceMeshResult& best = choice.best;
@@ -152,6 +163,11 @@ FaceMeshResult settle_natural_choice(const TopoDS_Face& face, bool seam, const s
     }
     return std::move(best);
   }
+  // The challenger smoothed already; the better of it and `best` stays as `best`.
+  const auto contest = [&](FaceMeshResult&& challenger) {
+    if (better_worst_then_mean(challenger, best)) std::swap(challenger, best);
+    offer_higher_mean(std::move(challenger), choice.higher_mean);
+  };
   smooth_face_mesh(face, seam, nodes, best);
   // The variants are ranked on their meshes before smoothing, which smoothing can
   // reorder (the variant ranked second before smoothing can end the better one after
@@ -174,13 +190,13 @@ FaceMeshResult settle_natural_choice(const TopoDS_Face& face, bool seam, const s
   if (promising_look) {
     FaceMeshResult& other = others[promising];
     smooth_face_mesh(face, seam, nodes, other);
-    if (better_worst_then_mean(other, best)) best = std::move(other);
+    contest(std::move(other));
   }
   // Ranked before smoothing, searched patches can win and then end lower once
   // smoothed: they are judged smoothed.
   if (choice.patches_searched) {
     smooth_face_mesh(face, seam, nodes, *choice.patches_searched);
-    if (better_worst_then_mean(*choice.patches_searched, best)) best = std::move(*choice.patches_searched);
+    contest(std::move(*choice.patches_searched));
   }
   // Each judged layout as placed or smoothed, whichever ranks higher: where its worst
   // corner is the CAD's own (a tip), the smoother's max-min moves can only lower the mean.
@@ -188,7 +204,7 @@ FaceMeshResult settle_natural_choice(const TopoDS_Face& face, bool seam, const s
     FaceMeshResult smoothed = layout;
     smooth_face_mesh(face, seam, nodes, smoothed);
     if (better_worst_then_mean(smoothed, layout)) layout = std::move(smoothed);
-    if (better_worst_then_mean(layout, best)) best = std::move(layout);
+    contest(std::move(layout));
   }
   return std::move(best);
 }
@@ -432,7 +448,8 @@ namespace {
 // (inverted, degenerate, folded or collapsed: is_bad_quad) refuse the face unless
 // allow_inverted (never a silent bad mesh).
 FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary& boundary, const PoleSector* sector,
-                              const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size) {
+                              const std::vector<Vec3>& nodes, const ShapeMeshOptions& options, double size,
+                              std::optional<FaceMeshResult>& higher_mean) {
   const auto start = std::chrono::steady_clock::now();
   const std::string name = "face " + std::to_string(f);
   RouteContext context(index, f, boundary, sector, nodes, options, size);
@@ -530,6 +547,12 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
   best.meshing_seconds = meshing_seconds;
   if (options.smooth) best.smoothing_seconds = seconds_since(smoothing);
   refuse_bad_quads(best, name, options);
+  // The alternative only where it trades the worst corner for the mean (had it both,
+  // it would have won).
+  if (natural.higher_mean && natural.higher_mean->worst_corner < best.worst_corner &&
+      mean_scaled_jacobian(*natural.higher_mean) > mean_scaled_jacobian(best)) {
+    higher_mean = std::move(natural.higher_mean);
+  }
   return best;
 }
 
@@ -545,9 +568,14 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
       sector = pole_sector(outcome.boundary, index.face(f));
       outcome.boundary = around_pole(outcome.boundary, index.face(f), f, nodes);
     }
-    outcome.mesh = best_face_mesh(index, f, outcome.boundary, sector ? &*sector : nullptr, nodes, options, size);
+    std::optional<FaceMeshResult> higher_mean;
+    outcome.mesh =
+        best_face_mesh(index, f, outcome.boundary, sector ? &*sector : nullptr, nodes, options, size, higher_mean);
     const std::string open = face_mesh_closure_problem(index, f, edges, outcome.mesh);
     if (!open.empty()) throw std::logic_error(open);  // a route's bug: an internal failure
+    if (higher_mean && face_mesh_closure_problem(index, f, edges, *higher_mean).empty()) {
+      outcome.higher_mean = std::move(higher_mean);
+    }
     outcome.ok = true;
   } catch (const InputError& e) {
     outcome.reason = e.what();
@@ -578,6 +606,46 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
   return outcome;
 }
 
+int take_higher_means(std::vector<FaceOutcome>& outcomes, const std::vector<char>& meshed) {
+  const auto in_part = [&](std::size_t f) { return f < meshed.size() && meshed[f] && outcomes[f].ok; };
+  const auto jacobian_sum = [](const FaceMeshResult& m) {
+    double total = 0;
+    for (double v : m.scaled_jacobian) total += v;
+    return total;
+  };
+  double part_worst = INFINITY, sum = 0;
+  long long count = 0;
+  for (std::size_t f = 0; f < outcomes.size(); ++f) {
+    if (!in_part(f)) continue;
+    part_worst = std::min(part_worst, outcomes[f].mesh.worst_corner);
+    sum += jacobian_sum(outcomes[f].mesh);
+    count += static_cast<long long>(outcomes[f].mesh.scaled_jacobian.size());
+  }
+  int taken = 0;
+  for (std::size_t f = 0; f < outcomes.size(); ++f) {
+    FaceOutcome& outcome = outcomes[f];
+    if (in_part(f) && outcome.higher_mean) {
+      FaceMeshResult& alternative = *outcome.higher_mean;
+      const double sum_after = sum - jacobian_sum(outcome.mesh) + jacobian_sum(alternative);
+      const long long count_after = count - static_cast<long long>(outcome.mesh.scaled_jacobian.size()) +
+                                    static_cast<long long>(alternative.scaled_jacobian.size());
+      // sum_after / count_after > sum / count, both counts positive.
+      if (alternative.worst_corner >= part_worst && count_after > 0 &&
+          sum_after * static_cast<double>(count) > sum * static_cast<double>(count_after)) {
+        alternative.meshing_seconds = outcome.mesh.meshing_seconds;
+        alternative.smoothing_seconds = outcome.mesh.smoothing_seconds;
+        alternative.corner_search = outcome.mesh.corner_search;
+        outcome.mesh = std::move(alternative);
+        sum = sum_after;
+        count = count_after;
+        ++taken;
+      }
+    }
+    outcome.higher_mean.reset();
+  }
+  return taken;
+}
+
 bool reuse_unchanged_face(const ShapeIndex& index, int f, const std::vector<EdgeNodes>& before_edges,
                           const std::vector<Vec3>& before_nodes, const std::vector<EdgeNodes>& edges,
                           const std::vector<Vec3>& nodes, FaceOutcome& outcome) {
@@ -605,16 +673,18 @@ bool reuse_unchanged_face(const ShapeIndex& index, int f, const std::vector<Edge
     out = std::move(ids);
     return true;
   };
-  std::vector<NodeId> loop, mesh_nodes;
+  std::vector<NodeId> loop, mesh_nodes, alternative_nodes;
   std::vector<std::vector<NodeId>> holes(outcome.boundary.holes.size());
   if (!renumbered_ids(outcome.boundary.nodes, loop) || !renumbered_ids(outcome.mesh.boundary_nodes, mesh_nodes)) {
     return false;
   }
+  if (outcome.higher_mean && !renumbered_ids(outcome.higher_mean->boundary_nodes, alternative_nodes)) return false;
   for (std::size_t h = 0; h < holes.size(); ++h) {
     if (!renumbered_ids(outcome.boundary.holes[h].nodes, holes[h])) return false;
   }
   outcome.boundary.nodes = std::move(loop);
   outcome.mesh.boundary_nodes = std::move(mesh_nodes);
+  if (outcome.higher_mean) outcome.higher_mean->boundary_nodes = std::move(alternative_nodes);
   for (std::size_t h = 0; h < holes.size(); ++h) outcome.boundary.holes[h].nodes = std::move(holes[h]);
   return true;
 }

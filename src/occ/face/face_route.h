@@ -32,7 +32,20 @@ struct FaceOutcome {
   std::string reason;
   FaceBoundary boundary;
   FaceMeshResult mesh;
+  // A smoothed candidate of higher mean than `mesh` and a lower worst corner, with no
+  // quad unfit for analysis (take_higher_means decides between them).
+  std::optional<FaceMeshResult> higher_mean;
 };
+
+// The part's worst element is the lowest worst corner of its faces. A face whose mesh
+// won on its worst corner (better_worst_then_mean) takes its higher-mean alternative
+// where that alternative's worst corner is still at or above the part's and the part's
+// mean over all its quads rises (a face's mean can rise with its quad count while the
+// part's falls): the mesh's worst element stays the same, its mean rises. Faces are
+// taken in order, each against the part's figures after the ones before it; every
+// alternative is dropped after. Counts the faces that took theirs. `meshed[f]`: face f
+// is part of the mesh (outcomes of other faces are left alone).
+int take_higher_means(std::vector<FaceOutcome>& outcomes, const std::vector<char>& meshed);
 
 // The registry's routes by name, in the order they are offered.
 std::vector<std::string> face_route_names();
