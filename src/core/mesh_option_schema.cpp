@@ -45,7 +45,7 @@ const std::vector<MeshOptionField>& mesh_option_schema() {
       {"best_corners", "--corners best", "BestCorners", "bool", "False",
        "Try more corner sets (2, 3 or 4 curves) on every face without given corners (the face's "
        "own when it has no holes, and each poor patch's of its decomposition) and keep the best "
-       "worst, then mean, scaled Jacobian (the mean once both worsts are fair, 0.3 or more); each such face's corner_search gives the natural "
+       "worst, then mean, scaled Jacobian; each such face's corner_search gives the natural "
        "choice's figures beside the chosen ones."},
       {"min_size", "--min-size", "CharacteristicLengthMin", "float", "0.0",
        "The target edge length never goes below this, given or automatic (0: no floor; above a "

@@ -84,7 +84,7 @@ struct ShapeMeshOptions {
   // Smooth each face's mesh on its surface (surface_smoothing.h).
   bool smooth = true;
   // Search more corner sets per face without holes (face_corners.h,
-  // searched_corner_choices) and keep the best by better_worst_then_mean.
+  // searched_corner_choices) and keep the best worst, then mean, scaled Jacobian.
   bool best_corners = false;
   // Worker threads for the faces; <= 0: all cores.
   int threads = 0;
@@ -125,8 +125,8 @@ struct ShapeMeshResult {
   // kept: the last one, unless an earlier one refused fewer faces (the earliest such).
   std::vector<int> refused_per_round;
   int kept_round = 0;
-  // Faces given their higher-mean mesh, its worst corner at or above the part's
-  // (FaceOutcome::higher_mean).
+  // Faces given their higher-mean mesh, the part's worst corner holding
+  // (take_higher_means, face_route.h).
   int higher_mean_faces = 0;
   long long straightened_mid_nodes = 0;  // second order: middles put on their chords (mid_edge_nodes.h)
   int interval_chains = 0;               // chains of opposite edges given one count

@@ -145,23 +145,15 @@ FaceMeshResult measured(std::vector<double> jacobians) {
   return m;
 }
 
-TEST(FaceRoutes, AboveAFairWorstCornerTheMeanDecides) {
-  const FaceMeshResult fair_worse_mean = measured({0.6, 0.7, 0.7});
-  const FaceMeshResult fair_better_mean = measured({0.35, 0.95, 0.95});
-  EXPECT_TRUE(better_worst_then_mean(fair_better_mean, fair_worse_mean));
-  EXPECT_FALSE(better_worst_then_mean(fair_worse_mean, fair_better_mean));
-  // Below kFineWorstCorner the worst corner decides, whatever the means.
-  const FaceMeshResult poor_better_mean = measured({kFineWorstCorner - 0.05, 0.99, 0.99});
-  EXPECT_TRUE(better_worst_then_mean(fair_worse_mean, poor_better_mean));
-  EXPECT_FALSE(better_worst_then_mean(poor_better_mean, fair_worse_mean));
-  // A bad quad loses to none, fair or not.
-  FaceMeshResult bad = measured({0.9, 0.95});
-  bad.bad = 1;
-  EXPECT_TRUE(better_worst_then_mean(poor_better_mean, bad));
+TEST(FaceRoutes, TheLowestCornerIsTakenByEitherNormal) {
+  FaceMeshResult warped = measured({0.6, 0.9});
+  EXPECT_EQ(lowest_corner(warped), 0.6);
+  warped.worst_own = 0.2;
+  EXPECT_EQ(lowest_corner(warped), 0.2);
 }
 
 TEST(FaceRoutes, AFaceTakesItsHigherMeanMeshOnlyWhereThePartsWorstHolds) {
-  std::vector<FaceOutcome> outcomes(5);
+  std::vector<FaceOutcome> outcomes(6);
   for (FaceOutcome& o : outcomes) o.ok = true;
   // Face 0 holds the part's worst corner, 0.2, and most of its quads (part mean 0.82).
   outcomes[0].mesh = measured({0.2, 0.99, 0.99, 0.99, 0.99, 0.99, 0.99, 0.99, 0.99, 0.99, 0.99, 0.99, 0.99});
@@ -178,7 +170,12 @@ TEST(FaceRoutes, AFaceTakesItsHigherMeanMeshOnlyWhereThePartsWorstHolds) {
   // Face 4 is not part of the mesh (refused, or not asked for): left as it is.
   outcomes[4].mesh = measured({0.5, 0.6});
   outcomes[4].higher_mean = measured({0.3, 0.95});
-  const std::vector<char> meshed{1, 1, 1, 1, 0};
+  // Face 5: fair against the surface, but a quad warped under the part's worst by its
+  // own normal: not taken.
+  outcomes[5].mesh = measured({0.5, 0.6});
+  outcomes[5].higher_mean = measured({0.3, 0.99, 0.99});
+  outcomes[5].higher_mean->worst_own = 0.1;
+  const std::vector<char> meshed{1, 1, 1, 1, 0, 1};
 
   const auto part = [&] {
     double sum = 0, worst = 1;
@@ -187,7 +184,7 @@ TEST(FaceRoutes, AFaceTakesItsHigherMeanMeshOnlyWhereThePartsWorstHolds) {
       if (!meshed[f]) continue;
       for (double v : outcomes[f].mesh.scaled_jacobian) sum += v;
       count += static_cast<long long>(outcomes[f].mesh.scaled_jacobian.size());
-      worst = std::min(worst, outcomes[f].mesh.worst_corner);
+      worst = std::min(worst, lowest_corner(outcomes[f].mesh));
     }
     return std::pair<double, double>(worst, sum / static_cast<double>(count));
   };
@@ -200,8 +197,9 @@ TEST(FaceRoutes, AFaceTakesItsHigherMeanMeshOnlyWhereThePartsWorstHolds) {
   EXPECT_EQ(outcomes[2].mesh.worst_corner, 0.5);
   EXPECT_EQ(outcomes[3].mesh.scaled_jacobian.size(), 2u);
   EXPECT_EQ(outcomes[4].mesh.scaled_jacobian.size(), 2u);
+  EXPECT_EQ(outcomes[5].mesh.scaled_jacobian.size(), 2u);
   // Every alternative of a meshed face is dropped once decided.
-  for (int f = 0; f < 4; ++f) EXPECT_FALSE(outcomes[f].higher_mean.has_value()) << "face " << f;
+  for (int f : {0, 1, 2, 3, 5}) EXPECT_FALSE(outcomes[f].higher_mean.has_value()) << "face " << f;
 }
 
 }  // namespace

@@ -69,8 +69,7 @@ _INPUTS = (
     ("App::PropertyBool", "BestCorners",
      "Try more corner sets (2, 3 or 4 curves) on every face without a Corners override "
      "(the face's own when it has no holes, and each poor patch's of its decomposition), "
-     "and keep the best worst, then mean, element quality (the mean once both worsts are "
-     "fair, 0.3 or more; slower)"),
+     "and keep the best worst, then mean, element quality (slower)"),
     ("App::PropertyStringList", "Corners",
      "Corner overrides, one per face: FACE:V1,V2,... with 2 to 4 vertices where the "
      "face's curves begin, as FreeCAD names (Face4:Vertex1,Vertex5,Vertex8) or 0-based "

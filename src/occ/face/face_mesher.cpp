@@ -266,7 +266,7 @@ void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surfac
   // singular at the node (a pole), the normal at the quad's centre stands in, and
   // where it is singular there too, the quad's own (the diagonals' cross product).
   long long inverted = 0, bad = 0, collapsed = 0, off_surface = 0;
-  double worst = 1.0;
+  double worst = 1.0, worst_own = 1.0;
   out.scaled_jacobian.clear();
   out.scaled_jacobian.reserve(out.quads.size());
   for (const Quad& q : out.quads) {
@@ -295,6 +295,8 @@ void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surfac
       quad_worst = std::min(quad_worst, corner_scaled_jacobian(corner, i, normal));
     }
     worst = std::min(worst, quad_worst);
+    const Vec3 own = cross(corner[2] - corner[0], corner[3] - corner[1]);
+    for (int i = 0; i < 4; ++i) worst_own = std::min(worst_own, corner_scaled_jacobian(corner, i, own));
     out.scaled_jacobian.push_back(quad_worst);
     inverted += quad_worst < -kSurfaceInvertedBelow ? 1 : 0;
     bad += is_bad_quad(corner, quad_worst) ? 1 : 0;
@@ -316,6 +318,7 @@ void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surfac
   out.collapsed = collapsed;
   out.off_surface = off_surface;
   out.worst_corner = worst;
+  out.worst_own = worst_own;
   out.normal = std::move(normals);
 }
 
@@ -352,9 +355,8 @@ double mean_scaled_jacobian(const FaceMeshResult& m) {
 }
 
 bool better_worst_then_mean(const FaceMeshResult& a, const FaceMeshResult& b) {
-  const bool both_fine = a.worst_corner >= kFineWorstCorner && b.worst_corner >= kFineWorstCorner;
   if (a.bad != b.bad || a.inverted != b.inverted || a.collapsed != b.collapsed ||
-      (!both_fine && std::abs(a.worst_corner - b.worst_corner) > 1e-9)) {
+      std::abs(a.worst_corner - b.worst_corner) > 1e-9) {
     return better_face_mesh(a, b);
   }
   return mean_scaled_jacobian(a) > mean_scaled_jacobian(b);

@@ -41,6 +41,7 @@ struct FaceMeshResult {
   long long collapsed = 0;       // collapsed quads (is_collapsed), counted in `bad` too
   long long off_surface = 0;     // quads cutting across the surface (kOffSurfaceRatio)
   double worst_corner = 1.0;     // lowest scaled Jacobian against the outer normal
+  double worst_own = 1.0;        // lowest against each quad's own normal (its diagonals' cross product)
   std::vector<double> scaled_jacobian;  // per quad, its corners signed by the outer normal
   // Each local node's mesh coordinates, as check_on_surface measured them: (u, v), or
   // polar (x, y) around `polar`'s pole.
@@ -99,14 +100,12 @@ bool better_face_mesh(const FaceMeshResult& a, const FaceMeshResult& b);
 // The mean of a face mesh's per-quad scaled Jacobian (0 for no quad).
 double mean_scaled_jacobian(const FaceMeshResult& m);
 
-// A worst corner at or above this (a scaled Jacobian of 0.3: every angle between
-// about 17.5 and 162.5 degrees) is fair; between two fair meshes the mean decides.
-inline constexpr double kFineWorstCorner = 0.3;
-// better_face_mesh, except that between two meshes whose worst corners are both fair
-// (kFineWorstCorner), or equal within 1e-9, the higher mean wins: the order the
-// smoothed candidates and --corners best are ranked by. Raising a fair worst corner
-// further at the mean's cost gives elements no solver needs, where the mean is
-// what most of the part's elements are.
+// A mesh's lowest corner by either normal: the surface's or the quad's own (a quad
+// warped on a curved face can be fair against the one and poor against the other).
+inline double lowest_corner(const FaceMeshResult& m) { return std::min(m.worst_corner, m.worst_own); }
+
+// better_face_mesh, and at the same worst corner (within 1e-9) the higher mean: the
+// order --corners best keeps ("the best worst element, then the best mean").
 bool better_worst_then_mean(const FaceMeshResult& a, const FaceMeshResult& b);
 
 // Quads come counter-clockwise around the face's outer normal. Throws InputError with

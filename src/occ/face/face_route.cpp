@@ -530,7 +530,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
   const bool seam = std::find(boundary.is_seam.begin(), boundary.is_seam.end(), 1) != boundary.is_seam.end();
   const auto smoothing = std::chrono::steady_clock::now();
   NaturalChoice natural{std::move(best), std::move(context.other_decompositions),
-                        std::move(context.patches_searched), std::move(context.judged_smoothed)};
+                        std::move(context.patches_searched), std::move(context.judged_smoothed), std::nullopt};
   best = settle_natural_choice(index.face(f), seam, nodes, options.smooth, natural);
   if (search_corners) {
     search.natural_worst = best.worst_corner;
@@ -549,7 +549,7 @@ FaceMeshResult best_face_mesh(const ShapeIndex& index, int f, const FaceBoundary
   refuse_bad_quads(best, name, options);
   // The alternative only where it trades the worst corner for the mean (had it both,
   // it would have won).
-  if (natural.higher_mean && natural.higher_mean->worst_corner < best.worst_corner &&
+  if (natural.higher_mean && lowest_corner(*natural.higher_mean) < lowest_corner(best) &&
       mean_scaled_jacobian(*natural.higher_mean) > mean_scaled_jacobian(best)) {
     higher_mean = std::move(natural.higher_mean);
   }
@@ -617,7 +617,7 @@ int take_higher_means(std::vector<FaceOutcome>& outcomes, const std::vector<char
   long long count = 0;
   for (std::size_t f = 0; f < outcomes.size(); ++f) {
     if (!in_part(f)) continue;
-    part_worst = std::min(part_worst, outcomes[f].mesh.worst_corner);
+    part_worst = std::min(part_worst, lowest_corner(outcomes[f].mesh));
     sum += jacobian_sum(outcomes[f].mesh);
     count += static_cast<long long>(outcomes[f].mesh.scaled_jacobian.size());
   }
@@ -630,7 +630,7 @@ int take_higher_means(std::vector<FaceOutcome>& outcomes, const std::vector<char
       const long long count_after = count - static_cast<long long>(outcome.mesh.scaled_jacobian.size()) +
                                     static_cast<long long>(alternative.scaled_jacobian.size());
       // sum_after / count_after > sum / count, both counts positive.
-      if (alternative.worst_corner >= part_worst && count_after > 0 &&
+      if (lowest_corner(alternative) >= part_worst && count_after > 0 &&
           sum_after * static_cast<double>(count) > sum * static_cast<double>(count_after)) {
         alternative.meshing_seconds = outcome.mesh.meshing_seconds;
         alternative.smoothing_seconds = outcome.mesh.smoothing_seconds;

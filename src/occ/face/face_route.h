@@ -37,9 +37,10 @@ struct FaceOutcome {
   std::optional<FaceMeshResult> higher_mean;
 };
 
-// The part's worst element is the lowest worst corner of its faces. A face whose mesh
-// won on its worst corner (better_worst_then_mean) takes its higher-mean alternative
-// where that alternative's worst corner is still at or above the part's and the part's
+// The part's worst element is the lowest corner of its faces (lowest_corner: by the
+// surface's normal or the quad's own). A face whose mesh won on its worst corner
+// (better_worst_then_mean) takes its higher-mean alternative where that alternative's
+// lowest corner is still at or above the part's and the part's
 // mean over all its quads rises (a face's mean can rise with its quad count while the
 // part's falls): the mesh's worst element stays the same, its mean rises. Faces are
 // taken in order, each against the part's figures after the ones before it; every
