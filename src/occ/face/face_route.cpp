@@ -141,9 +141,12 @@ struct NaturalChoice {
 };
 
 // Whether `loser`, a smoothed mesh that did not win, is kept as the face's higher-mean
-// alternative: no quad unfit for analysis, and a higher mean than the one kept so far.
+// alternative: no quad unfit for analysis or cutting across the surface, and a higher
+// mean than the one kept so far.
 void offer_higher_mean(FaceMeshResult&& loser, std::optional<FaceMeshResult>& kept) {
-  if (loser.bad > 0 || loser.inverted > 0 || loser.collapsed > 0 || loser.quads.empty()) return;
+  if (loser.bad > 0 || loser.inverted > 0 || loser.collapsed > 0 || loser.off_surface > 0 || loser.quads.empty()) {
+    return;
+  }
   if (kept && mean_scaled_jacobian(loser) <= mean_scaled_jacobian(*kept)) return;
   kept = std::move(loser);
 }

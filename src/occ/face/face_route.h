@@ -33,7 +33,7 @@ struct FaceOutcome {
   FaceBoundary boundary;
   FaceMeshResult mesh;
   // A smoothed candidate of higher mean than `mesh` and a lower worst corner, with no
-  // quad unfit for analysis (take_higher_means decides between them).
+  // quad unfit for analysis or off the surface (take_higher_means decides between them).
   std::optional<FaceMeshResult> higher_mean;
 };
 
