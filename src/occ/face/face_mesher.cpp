@@ -295,8 +295,7 @@ void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surfac
       quad_worst = std::min(quad_worst, corner_scaled_jacobian(corner, i, normal));
     }
     worst = std::min(worst, quad_worst);
-    const Vec3 own = cross(corner[2] - corner[0], corner[3] - corner[1]);
-    for (int i = 0; i < 4; ++i) worst_own = std::min(worst_own, corner_scaled_jacobian(corner, i, own));
+    worst_own = std::min(worst_own, own_scaled_jacobian(corner));
     out.scaled_jacobian.push_back(quad_worst);
     inverted += quad_worst < -kSurfaceInvertedBelow ? 1 : 0;
     bad += is_bad_quad(corner, quad_worst) ? 1 : 0;
@@ -347,11 +346,15 @@ bool better_face_mesh(const FaceMeshResult& a, const FaceMeshResult& b) {
   return a.worst_corner > b.worst_corner;
 }
 
-double mean_scaled_jacobian(const FaceMeshResult& m) {
-  if (m.scaled_jacobian.empty()) return 0.0;
+double scaled_jacobian_sum(const FaceMeshResult& m) {
   double sum = 0;
   for (double v : m.scaled_jacobian) sum += v;
-  return sum / static_cast<double>(m.scaled_jacobian.size());
+  return sum;
+}
+
+double mean_scaled_jacobian(const FaceMeshResult& m) {
+  if (m.scaled_jacobian.empty()) return 0.0;
+  return scaled_jacobian_sum(m) / static_cast<double>(m.scaled_jacobian.size());
 }
 
 bool better_worst_then_mean(const FaceMeshResult& a, const FaceMeshResult& b) {

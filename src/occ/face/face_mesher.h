@@ -41,7 +41,7 @@ struct FaceMeshResult {
   long long collapsed = 0;       // collapsed quads (is_collapsed), counted in `bad` too
   long long off_surface = 0;     // quads cutting across the surface (kOffSurfaceRatio)
   double worst_corner = 1.0;     // lowest scaled Jacobian against the outer normal
-  double worst_own = 1.0;        // lowest against each quad's own normal (its diagonals' cross product)
+  double worst_own = 1.0;        // lowest own_scaled_jacobian of its quads (quality.h)
   std::vector<double> scaled_jacobian;  // per quad, its corners signed by the outer normal
   // Each local node's mesh coordinates, as check_on_surface measured them: (u, v), or
   // polar (x, y) around `polar`'s pole.
@@ -97,7 +97,8 @@ void check_on_surface(const TopoDS_Face& face, const BRepAdaptor_Surface& surfac
 // worst corner.
 bool better_face_mesh(const FaceMeshResult& a, const FaceMeshResult& b);
 
-// The mean of a face mesh's per-quad scaled Jacobian (0 for no quad).
+// The sum and the mean of a face mesh's per-quad scaled Jacobian (0 for no quad).
+double scaled_jacobian_sum(const FaceMeshResult& m);
 double mean_scaled_jacobian(const FaceMeshResult& m);
 
 // A mesh's lowest corner by either normal: the surface's or the quad's own (a quad

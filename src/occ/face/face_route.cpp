@@ -141,12 +141,10 @@ struct NaturalChoice {
 };
 
 // Whether `loser`, a smoothed mesh that did not win, is kept as the face's higher-mean
-// alternative: no quad unfit for analysis or cutting across the surface, and a higher
-// mean than the one kept so far.
+// alternative: no quad unfit for analysis (`bad` counts the inverted and collapsed ones
+// too) or cutting across the surface, and a higher mean than the one kept so far.
 void offer_higher_mean(FaceMeshResult&& loser, std::optional<FaceMeshResult>& kept) {
-  if (loser.bad > 0 || loser.inverted > 0 || loser.collapsed > 0 || loser.off_surface > 0 || loser.quads.empty()) {
-    return;
-  }
+  if (loser.bad > 0 || loser.off_surface > 0 || loser.quads.empty()) return;
   if (kept && mean_scaled_jacobian(loser) <= mean_scaled_jacobian(*kept)) return;
   kept = std::move(loser);
 }
@@ -611,17 +609,12 @@ FaceOutcome mesh_one_face(const ShapeIndex& index, int f, const std::vector<Edge
 
 int take_higher_means(std::vector<FaceOutcome>& outcomes, const std::vector<char>& meshed) {
   const auto in_part = [&](std::size_t f) { return f < meshed.size() && meshed[f] && outcomes[f].ok; };
-  const auto jacobian_sum = [](const FaceMeshResult& m) {
-    double total = 0;
-    for (double v : m.scaled_jacobian) total += v;
-    return total;
-  };
   double part_worst = INFINITY, sum = 0;
   long long count = 0;
   for (std::size_t f = 0; f < outcomes.size(); ++f) {
     if (!in_part(f)) continue;
     part_worst = std::min(part_worst, lowest_corner(outcomes[f].mesh));
-    sum += jacobian_sum(outcomes[f].mesh);
+    sum += scaled_jacobian_sum(outcomes[f].mesh);
     count += static_cast<long long>(outcomes[f].mesh.scaled_jacobian.size());
   }
   int taken = 0;
@@ -629,7 +622,7 @@ int take_higher_means(std::vector<FaceOutcome>& outcomes, const std::vector<char
     FaceOutcome& outcome = outcomes[f];
     if (in_part(f) && outcome.higher_mean) {
       FaceMeshResult& alternative = *outcome.higher_mean;
-      const double sum_after = sum - jacobian_sum(outcome.mesh) + jacobian_sum(alternative);
+      const double sum_after = sum - scaled_jacobian_sum(outcome.mesh) + scaled_jacobian_sum(alternative);
       const long long count_after = count - static_cast<long long>(outcome.mesh.scaled_jacobian.size()) +
                                     static_cast<long long>(alternative.scaled_jacobian.size());
       // sum_after / count_after > sum / count, both counts positive.
